@@ -1,0 +1,160 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum
+{
+    /// <summary>
+    /// Body state in struct-of-arrays form, indexed by slot. Slots are reused through a free
+    /// list; each reuse bumps the slot's generation so old handles go stale. Live slots are
+    /// also kept densely in <see cref="Active"/> so that stage loops walk only real bodies.
+    /// Internal: the public view is <see cref="BodyRef"/>.
+    /// </summary>
+    internal sealed class BodyStorage
+    {
+        // Hot: read or written by every stage loop.
+        public Vector3[] Position = Array.Empty<Vector3>();          // body origin, world
+        public Quaternion[] Rotation = Array.Empty<Quaternion>();
+        public Vector3[] Center = Array.Empty<Vector3>();            // centre of mass, world
+        public Vector3[] LinearVelocity = Array.Empty<Vector3>();    // of the centre of mass
+        public Vector3[] AngularVelocity = Array.Empty<Vector3>();   // world
+        public float[] InverseMass = Array.Empty<float>();
+        public Mat3[] InverseInertiaWorld = Array.Empty<Mat3>();     // R_p diag(1/I) R_p^T, refreshed with the pose
+        public BodyType[] Type = Array.Empty<BodyType>();
+        public bool[] Awake = Array.Empty<bool>();
+
+        // Warm: read during integration.
+        public Vector3[] Force = Array.Empty<Vector3>();             // accumulated until the end of the step
+        public Vector3[] Torque = Array.Empty<Vector3>();
+        public Vector3[] InverseInertiaPrincipal = Array.Empty<Vector3>(); // 1/I along the principal axes (0 = locked)
+        public Quaternion[] InertiaFrame = Array.Empty<Quaternion>();      // principal axes in the body frame
+        public Vector3[] LocalCenter = Array.Empty<Vector3>();
+        public float[] LinearDamping = Array.Empty<float>();
+        public float[] AngularDamping = Array.Empty<float>();
+        public float[] GravityScale = Array.Empty<float>();
+        public Vector3[] PreviousPosition = Array.Empty<Vector3>();  // pose at the start of the last step, for interpolation
+        public Quaternion[] PreviousRotation = Array.Empty<Quaternion>();
+
+        // Cold: touched on creation, edits and rare events.
+        public int[] Generation = Array.Empty<int>();
+        public int[] ActiveIndex = Array.Empty<int>();               // position in Active, -1 when the slot is free
+        public float[] Mass = Array.Empty<float>();
+        public Mat3[] InertiaLocal = Array.Empty<Mat3>();            // about the centre, body frame
+        public float[] MassOverride = Array.Empty<float>();          // 0: from shapes
+        public bool[] AllowSleep = Array.Empty<bool>();
+        public bool[] Ccd = Array.Empty<bool>();
+        public float[] SleepTime = Array.Empty<float>();
+        public bool[] HasKinematicTarget = Array.Empty<bool>();
+        public bool[] VelocityFromTarget = Array.Empty<bool>();
+        public Vector3[] TargetPosition = Array.Empty<Vector3>();
+        public Quaternion[] TargetRotation = Array.Empty<Quaternion>();
+        public int[] FirstShape = Array.Empty<int>();                // head of the body's shape list, -1 for none
+        public string?[] Name = Array.Empty<string?>();
+        public ulong[] UserData = Array.Empty<ulong>();
+
+        /// <summary>Slots of live bodies, densely packed; order changes on removal (swap-remove).</summary>
+        public int[] Active = Array.Empty<int>();
+        /// <summary>How many entries of <see cref="Active"/> are used.</summary>
+        public int ActiveCount;
+
+        int _capacity;
+        int _slotCount;          // slots ever used
+        int[] _free = Array.Empty<int>();
+        int _freeCount;
+
+        /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
+        public int SlotCount => _slotCount;
+
+        /// <summary>True when the handle names a live body.</summary>
+        public bool IsLive(BodyHandle h) =>
+            h.Generation != 0 && (uint)h.Index < (uint)_slotCount && Generation[h.Index] == h.Generation && ActiveIndex[h.Index] >= 0;
+
+        /// <summary>Takes a free slot (growing the arrays if needed) and marks it live.</summary>
+        public int Allocate()
+        {
+            int slot;
+            if (_freeCount > 0) slot = _free[--_freeCount];
+            else
+            {
+                if (_slotCount == _capacity) Grow(Math.Max(16, _capacity * 2));
+                slot = _slotCount++;
+            }
+            Generation[slot]++;
+            if (Generation[slot] <= 0) Generation[slot] = 1; // wrapped after 2^31 reuses
+            ActiveIndex[slot] = ActiveCount;
+            Active[ActiveCount++] = slot;
+            return slot;
+        }
+
+        /// <summary>Returns a slot to the free list; its handle goes stale.</summary>
+        public void Release(int slot)
+        {
+            int at = ActiveIndex[slot];
+            int last = Active[--ActiveCount];
+            Active[at] = last;
+            ActiveIndex[last] = at;
+            ActiveIndex[slot] = -1;
+            Generation[slot]++;
+            if (Generation[slot] <= 0) Generation[slot] = 1;
+            Name[slot] = null;
+            if (_freeCount == _free.Length) Array.Resize(ref _free, Math.Max(16, _free.Length * 2));
+            _free[_freeCount++] = slot;
+        }
+
+        void Grow(int capacity)
+        {
+            Array.Resize(ref Position, capacity);
+            Array.Resize(ref Rotation, capacity);
+            Array.Resize(ref Center, capacity);
+            Array.Resize(ref LinearVelocity, capacity);
+            Array.Resize(ref AngularVelocity, capacity);
+            Array.Resize(ref InverseMass, capacity);
+            Array.Resize(ref InverseInertiaWorld, capacity);
+            Array.Resize(ref Type, capacity);
+            Array.Resize(ref Awake, capacity);
+            Array.Resize(ref Force, capacity);
+            Array.Resize(ref Torque, capacity);
+            Array.Resize(ref InverseInertiaPrincipal, capacity);
+            Array.Resize(ref InertiaFrame, capacity);
+            Array.Resize(ref LocalCenter, capacity);
+            Array.Resize(ref LinearDamping, capacity);
+            Array.Resize(ref AngularDamping, capacity);
+            Array.Resize(ref GravityScale, capacity);
+            Array.Resize(ref PreviousPosition, capacity);
+            Array.Resize(ref PreviousRotation, capacity);
+            Array.Resize(ref Generation, capacity);
+            Array.Resize(ref ActiveIndex, capacity);
+            Array.Resize(ref Mass, capacity);
+            Array.Resize(ref InertiaLocal, capacity);
+            Array.Resize(ref MassOverride, capacity);
+            Array.Resize(ref AllowSleep, capacity);
+            Array.Resize(ref Ccd, capacity);
+            Array.Resize(ref SleepTime, capacity);
+            Array.Resize(ref HasKinematicTarget, capacity);
+            Array.Resize(ref VelocityFromTarget, capacity);
+            Array.Resize(ref TargetPosition, capacity);
+            Array.Resize(ref TargetRotation, capacity);
+            Array.Resize(ref FirstShape, capacity);
+            Array.Resize(ref Name, capacity);
+            Array.Resize(ref UserData, capacity);
+            Array.Resize(ref Active, capacity);
+            for (int i = _capacity; i < capacity; i++) ActiveIndex[i] = -1;
+            _capacity = capacity;
+        }
+
+        /// <summary>Refreshes the world inverse inertia of a slot from its rotation.</summary>
+        public void UpdateWorldInertia(int slot)
+        {
+            Mat3 r = Mat3.FromQuaternion(Rotation[slot] * InertiaFrame[slot]);
+            InverseInertiaWorld[slot] = Mat3.RotateDiagonal(r, InverseInertiaPrincipal[slot]);
+        }
+
+        /// <summary>Sets the origin from the world centre of mass (after the centre moved).</summary>
+        public void SyncOriginFromCenter(int slot) =>
+            Position[slot] = Center[slot] - Vector3.Transform(LocalCenter[slot], Rotation[slot]);
+
+        /// <summary>Sets the world centre of mass from the origin (after the origin moved).</summary>
+        public void SyncCenterFromOrigin(int slot) =>
+            Center[slot] = Position[slot] + Vector3.Transform(LocalCenter[slot], Rotation[slot]);
+    }
+}

@@ -1,0 +1,300 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum
+{
+    public sealed partial class World
+    {
+        /// <summary>
+        /// Creates a body. Every field of <paramref name="def"/> is checked before anything
+        /// changes; a bad one throws an <see cref="ArgumentException"/> naming it.
+        /// </summary>
+        public BodyHandle CreateBody(in BodyDef def)
+        {
+            ThrowIfInStep();
+            if (def.Type != BodyType.Static && def.Type != BodyType.Kinematic && def.Type != BodyType.Dynamic)
+                throw new ArgumentException($"body.Type must be Static, Kinematic or Dynamic, got {def.Type}.", nameof(def));
+            Validate.Finite(def.Position, "body.Position");
+            Quaternion rotation = Validate.Rotation(def.Rotation, "body.Rotation");
+            Validate.Finite(def.LinearVelocity, "body.LinearVelocity");
+            Validate.Finite(def.AngularVelocity, "body.AngularVelocity");
+            Validate.NonNegative(def.LinearDamping, "body.LinearDamping");
+            Validate.NonNegative(def.AngularDamping, "body.AngularDamping");
+            Validate.Finite(def.GravityScale, "body.GravityScale");
+            if (def.Mass != 0) Validate.Positive(def.Mass, "body.Mass");
+
+            BodyStorage b = Bodies;
+            int i = b.Allocate();
+            b.Type[i] = def.Type;
+            b.Position[i] = def.Position;
+            b.Rotation[i] = rotation;
+            b.PreviousPosition[i] = def.Position;
+            b.PreviousRotation[i] = rotation;
+            bool moves = def.Type != BodyType.Static;
+            b.LinearVelocity[i] = moves ? def.LinearVelocity : default;
+            b.AngularVelocity[i] = moves ? def.AngularVelocity : default;
+            b.Force[i] = default;
+            b.Torque[i] = default;
+            b.LinearDamping[i] = def.LinearDamping;
+            b.AngularDamping[i] = def.AngularDamping;
+            b.GravityScale[i] = def.GravityScale;
+            b.MassOverride[i] = def.Mass;
+            b.AllowSleep[i] = def.AllowSleep;
+            b.Awake[i] = def.Type != BodyType.Static && (def.IsAwake || !def.AllowSleep);
+            b.Ccd[i] = def.Ccd;
+            b.SleepTime[i] = 0;
+            b.HasKinematicTarget[i] = false;
+            b.VelocityFromTarget[i] = false;
+            b.FirstShape[i] = -1;
+            b.Name[i] = def.Name;
+            b.UserData[i] = def.UserData;
+            UpdateMassProperties(i);
+            return new BodyHandle(i, b.Generation[i]);
+        }
+
+        /// <summary>
+        /// Removes a body with its shapes (and the joints and contacts that name it). The
+        /// handle goes stale; removing it again throws <see cref="StaleHandleException"/>.
+        /// </summary>
+        public void DestroyBody(BodyHandle body)
+        {
+            ThrowIfInStep();
+            int i = Slot(body);
+            int s = Bodies.FirstShape[i];
+            while (s >= 0)
+            {
+                int next = Shapes.NextInBody[s];
+                ReleaseShape(s);
+                s = next;
+            }
+            Bodies.FirstShape[i] = -1;
+            Bodies.Release(i);
+        }
+
+        /// <summary>True when the handle names a live body of this world.</summary>
+        public bool IsValid(BodyHandle body) => Bodies.IsLive(body);
+
+        /// <summary>A view for reading and writing one body; throws if the handle is stale.</summary>
+        public BodyRef GetBody(BodyHandle body) => new BodyRef(this, Slot(body), body.Generation);
+
+        /// <summary>Copies the handles of all live bodies into <paramref name="into"/>; returns how many (at most its length).</summary>
+        public int GetBodies(Span<BodyHandle> into)
+        {
+            int n = Math.Min(into.Length, Bodies.ActiveCount);
+            for (int k = 0; k < n; k++)
+            {
+                int i = Bodies.Active[k];
+                into[k] = new BodyHandle(i, Bodies.Generation[i]);
+            }
+            return n;
+        }
+
+        /// <summary>The slot of a live body, or <see cref="StaleHandleException"/>.</summary>
+        internal int Slot(BodyHandle body)
+        {
+            if (!Bodies.IsLive(body))
+                throw new StaleHandleException(body.IsNone
+                    ? "The body handle is None."
+                    : $"{body} does not name a live body: it was destroyed, or belongs to another world.");
+            return body.Index;
+        }
+
+        /// <summary>
+        /// Sets mass, centre and inertia directly, overriding the shapes' densities until
+        /// <see cref="ResetMassProperties"/>. Dynamic bodies only; checked before anything changes.
+        /// </summary>
+        public void SetMassProperties(BodyHandle body, in MassProperties mass)
+        {
+            ThrowIfInStep();
+            int i = Slot(body);
+            mass.Validate("mass");
+            if (Bodies.Type[i] != BodyType.Dynamic) throw new InvalidOperationException($"{Describe(i)} is not dynamic: only dynamic bodies have mass.");
+            ApplyMass(i, mass);
+            Bodies.MassOverride[i] = -1; // explicit distribution: shapes no longer decide
+        }
+
+        /// <summary>Returns to mass properties computed from the shapes' densities.</summary>
+        public void ResetMassProperties(BodyHandle body)
+        {
+            ThrowIfInStep();
+            int i = Slot(body);
+            Bodies.MassOverride[i] = 0;
+            UpdateMassProperties(i);
+        }
+
+        /// <summary>Mass properties of a body's shapes at their densities (before any override).</summary>
+        public MassProperties ComputeShapeMass(BodyHandle body) => ShapeMass(Slot(body));
+
+        MassProperties ShapeMass(int i)
+        {
+            MassProperties total = default;
+            for (int s = Bodies.FirstShape[i]; s >= 0; s = Shapes.NextInBody[s])
+            {
+                if (Shapes.IsSensor[s] || Shapes.Density[s] <= 0) continue;
+                MassProperties m = Shapes.Geometry[s].ComputeMass(Shapes.Density[s]).Transformed(Shapes.LocalPose[s]);
+                total = total.Mass > 0 ? MassProperties.Combine(total, m) : m;
+            }
+            return total;
+        }
+
+        // Recomputes mass from the shapes (or the mass override) after a shape or type change.
+        // A dynamic body with no massive shape gets 1 kg and unit inertia, so it still moves.
+        internal void UpdateMassProperties(int i)
+        {
+            BodyStorage b = Bodies;
+            if (b.Type[i] != BodyType.Dynamic)
+            {
+                b.Mass[i] = 0;
+                b.InverseMass[i] = 0;
+                b.LocalCenter[i] = Vector3.Zero;
+                b.InertiaLocal[i] = default;
+                b.InverseInertiaPrincipal[i] = Vector3.Zero;
+                b.InertiaFrame[i] = Quaternion.Identity;
+                b.SyncCenterFromOrigin(i);
+                b.InverseInertiaWorld[i] = default;
+                return;
+            }
+            if (b.MassOverride[i] < 0) return; // set explicitly
+            MassProperties m = ShapeMass(i);
+            if (!(m.Mass > 0)) m = new MassProperties(1f, Vector3.Zero, Mat3.Identity);
+            if (b.MassOverride[i] > 0) m = m.WithMass(b.MassOverride[i]);
+            ApplyMass(i, m);
+        }
+
+        void ApplyMass(int i, in MassProperties m)
+        {
+            BodyStorage b = Bodies;
+            b.Mass[i] = m.Mass;
+            b.InverseMass[i] = 1f / m.Mass;
+            b.LocalCenter[i] = m.Center;
+            b.InertiaLocal[i] = m.Inertia;
+            Vector3 moments = Mathematics.Rotation.Diagonalize(m.Inertia, out Quaternion axes);
+            b.InertiaFrame[i] = axes;
+            b.InverseInertiaPrincipal[i] = new Vector3(
+                moments.X > 0 ? 1f / moments.X : 0,
+                moments.Y > 0 ? 1f / moments.Y : 0,
+                moments.Z > 0 ? 1f / moments.Z : 0);
+            b.SyncCenterFromOrigin(i);
+            b.UpdateWorldInertia(i);
+        }
+
+        internal string Describe(int i) => Bodies.Name[i] is string n ? $"body '{n}'" : $"body {i}";
+
+        /// <summary>
+        /// Applies a force (or acceleration, impulse, velocity change) at the centre of mass.
+        /// Dynamic bodies only; on static and kinematic bodies it does nothing, as in Unity.
+        /// Wakes the body.
+        /// </summary>
+        public void AddForce(BodyHandle body, Vector3 force, ForceMode mode = ForceMode.Force)
+        {
+            int i = Slot(body);
+            Validate.Finite(force, nameof(force));
+            ThrowIfInStep();
+            ApplyLinear(i, force, mode);
+        }
+
+        /// <summary>
+        /// Applies a force at a world point: the force at the centre of mass plus the torque
+        /// (p - c) x F. Dynamic bodies only. Wakes the body.
+        /// </summary>
+        public void AddForceAtPosition(BodyHandle body, Vector3 force, Vector3 worldPoint, ForceMode mode = ForceMode.Force)
+        {
+            int i = Slot(body);
+            Validate.Finite(force, nameof(force));
+            Validate.Finite(worldPoint, nameof(worldPoint));
+            ThrowIfInStep();
+            ApplyLinear(i, force, mode);
+            ApplyAngular(i, Vector3.Cross(worldPoint - Bodies.Center[i], force), mode);
+        }
+
+        /// <summary>Applies a torque (or angular acceleration, impulse, velocity change) in world axes. Dynamic bodies only. Wakes the body.</summary>
+        public void AddTorque(BodyHandle body, Vector3 torque, ForceMode mode = ForceMode.Force)
+        {
+            int i = Slot(body);
+            Validate.Finite(torque, nameof(torque));
+            ThrowIfInStep();
+            ApplyAngular(i, torque, mode);
+        }
+
+        void ApplyLinear(int i, Vector3 f, ForceMode mode)
+        {
+            BodyStorage b = Bodies;
+            if (b.Type[i] != BodyType.Dynamic) return;
+            switch (mode)
+            {
+                case ForceMode.Force: b.Force[i] += f; break;
+                case ForceMode.Acceleration: b.Force[i] += f * b.Mass[i]; break;
+                case ForceMode.Impulse: b.LinearVelocity[i] += f * b.InverseMass[i]; break;
+                case ForceMode.VelocityChange: b.LinearVelocity[i] += f; break;
+                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
+            }
+            Wake(i);
+        }
+
+        void ApplyAngular(int i, Vector3 t, ForceMode mode)
+        {
+            BodyStorage b = Bodies;
+            if (b.Type[i] != BodyType.Dynamic) return;
+            switch (mode)
+            {
+                case ForceMode.Force: b.Torque[i] += t; break;
+                case ForceMode.Acceleration: b.Torque[i] += WorldInertia(i) * t; break;
+                case ForceMode.Impulse: b.AngularVelocity[i] += b.InverseInertiaWorld[i] * t; break;
+                case ForceMode.VelocityChange: b.AngularVelocity[i] += t; break;
+                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
+            }
+            Wake(i);
+        }
+
+        // The world inertia tensor R I R^T (for mass-independent angular acceleration).
+        internal Mat3 WorldInertia(int i)
+        {
+            Mat3 r = Mat3.FromQuaternion(Bodies.Rotation[i]);
+            return r * Bodies.InertiaLocal[i] * r.Transposed;
+        }
+
+        /// <summary>
+        /// Drives a kinematic body to <paramref name="position"/>/<paramref name="rotation"/>
+        /// over the next step: the step gives it the velocity that reaches the target, so it
+        /// pushes dynamic bodies as a moving body should, and ends exactly on the target.
+        /// Without a new target the following step stops it.
+        /// </summary>
+        public void SetKinematicTarget(BodyHandle body, Vector3 position, Quaternion rotation)
+        {
+            int i = Slot(body);
+            Validate.Finite(position, nameof(position));
+            Quaternion q = Validate.Rotation(rotation, nameof(rotation));
+            ThrowIfInStep();
+            if (Bodies.Type[i] != BodyType.Kinematic)
+                throw new InvalidOperationException($"{Describe(i)} is not kinematic: only kinematic bodies take a target pose.");
+            // Keep the target on the same hemisphere as the current rotation (shortest arc).
+            if (Quaternion.Dot(q, Bodies.Rotation[i]) < 0) q = Quaternion.Negate(q);
+            Bodies.TargetPosition[i] = position;
+            Bodies.TargetRotation[i] = q;
+            Bodies.HasKinematicTarget[i] = true;
+        }
+
+        /// <summary>Wakes a body (and, once islands exist, its island).</summary>
+        internal void Wake(int i)
+        {
+            if (Bodies.Type[i] == BodyType.Static) return;
+            Bodies.Awake[i] = true;
+            Bodies.SleepTime[i] = 0;
+        }
+
+        /// <summary>
+        /// The pose between the start and the end of the last step, for rendering between
+        /// fixed steps: <paramref name="alpha"/> 0 is the previous pose, 1 the current one
+        /// (see <see cref="FixedStepper.InterpolationFactor"/>).
+        /// </summary>
+        public Pose GetInterpolatedPose(BodyHandle body, float alpha)
+        {
+            int i = Slot(body);
+            alpha = Math.Clamp(alpha, 0f, 1f);
+            Vector3 p = Vector3.Lerp(Bodies.PreviousPosition[i], Bodies.Position[i], alpha);
+            Quaternion q = Quaternion.Slerp(Bodies.PreviousRotation[i], Bodies.Rotation[i], alpha);
+            return new Pose(p, q);
+        }
+    }
+}

@@ -1,0 +1,111 @@
+using System;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum
+{
+    public sealed partial class World
+    {
+        /// <summary>
+        /// Attaches a shape to a body; the body's mass is recomputed from its shapes unless it
+        /// was set directly. Planes and meshes may only go on static bodies. Checked before
+        /// anything changes.
+        /// </summary>
+        public ShapeHandle AddShape(BodyHandle body, in ShapeDef def)
+        {
+            ThrowIfInStep();
+            int b = Slot(body);
+            def.Validate();
+            if (def.Geometry.IsStaticOnly && Bodies.Type[b] != BodyType.Static)
+                throw new ArgumentException($"A {def.Geometry.Type} shape can only be attached to a static body; {Describe(b)} is {Bodies.Type[b]}.", nameof(def));
+
+            ShapeStorage s = Shapes;
+            int i = s.Allocate();
+            s.Geometry[i] = def.Geometry;
+            s.LocalPose[i] = new Pose(def.LocalPose.Position, Validate.Rotation(def.LocalPose.Rotation, "shape.LocalPose.Rotation"));
+            s.Body[i] = b;
+            s.Density[i] = def.Density;
+            s.Friction[i] = def.Friction;
+            s.Restitution[i] = def.Restitution;
+            s.FrictionCombine[i] = def.FrictionCombine;
+            s.RestitutionCombine[i] = def.RestitutionCombine;
+            s.IsSensor[i] = def.IsSensor;
+            s.Layer[i] = def.Layer;
+            s.CollidesWith[i] = def.CollidesWith;
+            s.UserData[i] = def.UserData;
+            s.NextInBody[i] = Bodies.FirstShape[b];
+            Bodies.FirstShape[b] = i;
+            s.WorldAabb[i] = def.Geometry.ComputeAabb(ShapeWorldPose(i));
+            OnShapeAdded(i);
+            UpdateMassProperties(b);
+            return new ShapeHandle(i, s.Generation[i]);
+        }
+
+        /// <summary>Detaches and removes a shape; the body's mass is recomputed.</summary>
+        public void RemoveShape(ShapeHandle shape)
+        {
+            ThrowIfInStep();
+            int i = ShapeSlot(shape);
+            int b = Shapes.Body[i];
+            // Unlink from the body's list.
+            if (Bodies.FirstShape[b] == i) Bodies.FirstShape[b] = Shapes.NextInBody[i];
+            else
+            {
+                int p = Bodies.FirstShape[b];
+                while (Shapes.NextInBody[p] != i) p = Shapes.NextInBody[p];
+                Shapes.NextInBody[p] = Shapes.NextInBody[i];
+            }
+            ReleaseShape(i);
+            UpdateMassProperties(b);
+        }
+
+        /// <summary>True when the handle names a live shape of this world.</summary>
+        public bool IsValid(ShapeHandle shape) => Shapes.IsLive(shape);
+
+        /// <summary>The body a shape is attached to.</summary>
+        public BodyHandle GetShapeBody(ShapeHandle shape)
+        {
+            int b = Shapes.Body[ShapeSlot(shape)];
+            return new BodyHandle(b, Bodies.Generation[b]);
+        }
+
+        /// <summary>The geometry of a shape.</summary>
+        public ShapeGeometry GetShapeGeometry(ShapeHandle shape) => Shapes.Geometry[ShapeSlot(shape)];
+
+        /// <summary>The shape's pose in its body's frame.</summary>
+        public Pose GetShapeLocalPose(ShapeHandle shape) => Shapes.LocalPose[ShapeSlot(shape)];
+
+        /// <summary>The shape's world bounds as of the end of the last step (or its creation).</summary>
+        public Aabb GetShapeAabb(ShapeHandle shape) => Shapes.WorldAabb[ShapeSlot(shape)];
+
+        /// <summary>Copies the handles of a body's shapes into <paramref name="into"/>; returns how many there are in all.</summary>
+        public int GetShapes(BodyHandle body, Span<ShapeHandle> into)
+        {
+            int n = 0;
+            for (int s = Bodies.FirstShape[Slot(body)]; s >= 0; s = Shapes.NextInBody[s], n++)
+                if (n < into.Length) into[n] = new ShapeHandle(s, Shapes.Generation[s]);
+            return n;
+        }
+
+        internal int ShapeSlot(ShapeHandle shape)
+        {
+            if (!Shapes.IsLive(shape))
+                throw new StaleHandleException(shape.IsNone
+                    ? "The shape handle is None."
+                    : $"{shape} does not name a live shape: it was removed, or belongs to another world.");
+            return shape.Index;
+        }
+
+        /// <summary>The world pose of a shape: its body's pose times its local pose.</summary>
+        internal Pose ShapeWorldPose(int shape)
+        {
+            int b = Shapes.Body[shape];
+            return new Pose(Bodies.Position[b], Bodies.Rotation[b]) * Shapes.LocalPose[shape];
+        }
+
+        void ReleaseShape(int i)
+        {
+            OnShapeRemoved(i);
+            Shapes.Release(i);
+        }
+    }
+}

@@ -1,0 +1,110 @@
+using System;
+using System.Diagnostics;
+
+namespace Fulcrum
+{
+    public sealed partial class World
+    {
+        static readonly double TicksToMs = 1000.0 / Stopwatch.Frequency;
+
+        /// <summary>
+        /// Advances the world by <paramref name="dt"/> seconds (a fixed step: keep the
+        /// accumulator in the caller, or use <see cref="FixedStepper"/>). Runs the stages of
+        /// <see cref="StepStage"/> in order; a stage with no work returns at once.
+        /// Allocates nothing once the world is warm.
+        /// </summary>
+        public void Step(float dt)
+        {
+            if (!(dt > 0 && float.IsFinite(dt)))
+                throw new ArgumentException($"dt must be finite and > 0, got {dt}.", nameof(dt));
+            ThrowIfInStep();
+            _inStep = true;
+            try
+            {
+                _profile = default;
+                long start = Stopwatch.GetTimestamp();
+                long t = start;
+                BeginStep(dt);
+
+                UpdateBroadPhase();
+                t = Mark(StepStage.BroadPhase, t);
+                UpdateContacts();
+                t = Mark(StepStage.NarrowPhase, t);
+                BuildIslands();
+                t = Mark(StepStage.Islands, t);
+                Solve(dt);
+                t = Mark(StepStage.Solve, t);
+                if (SoftBodyStage != null && SoftBodyStage.HasWork) SoftBodyStage.Step(this, dt);
+                t = Mark(StepStage.SoftBodies, t);
+                SolveContinuous(dt);
+                t = Mark(StepStage.Continuous, t);
+                UpdateSleepAndEvents(dt);
+                Mark(StepStage.SleepAndEvents, t);
+
+                EndStep();
+                _stepIndex++;
+                Time += dt;
+                _profile.Total = (Stopwatch.GetTimestamp() - start) * TicksToMs;
+            }
+            finally
+            {
+                _inStep = false;
+            }
+        }
+
+        long Mark(StepStage stage, long since)
+        {
+            long now = Stopwatch.GetTimestamp();
+            _profile.Add(stage, (now - since) * TicksToMs);
+            return now;
+        }
+
+        // Remembers the starting pose for render interpolation and turns kinematic targets
+        // into the velocities that reach them in this step.
+        void BeginStep(float dt)
+        {
+            BodyStorage b = Bodies;
+            for (int k = 0; k < b.ActiveCount; k++)
+            {
+                int i = b.Active[k];
+                b.PreviousPosition[i] = b.Position[i];
+                b.PreviousRotation[i] = b.Rotation[i];
+                if (b.Type[i] != BodyType.Kinematic) continue;
+                if (b.HasKinematicTarget[i])
+                {
+                    b.LinearVelocity[i] = (b.TargetPosition[i] - b.Position[i]) / dt;
+                    b.AngularVelocity[i] = Mathematics.Rotation.AngularVelocityBetween(b.Rotation[i], b.TargetRotation[i], dt);
+                    b.VelocityFromTarget[i] = true;
+                    b.Awake[i] = true;
+                }
+                else if (b.VelocityFromTarget[i])
+                {
+                    // A target moves the body for one step only; without a new one it stops.
+                    b.LinearVelocity[i] = default;
+                    b.AngularVelocity[i] = default;
+                    b.VelocityFromTarget[i] = false;
+                }
+            }
+        }
+
+        // Snaps kinematic bodies exactly onto their targets and clears accumulated forces.
+        void EndStep()
+        {
+            BodyStorage b = Bodies;
+            for (int k = 0; k < b.ActiveCount; k++)
+            {
+                int i = b.Active[k];
+                b.Force[i] = default;
+                b.Torque[i] = default;
+                if (b.HasKinematicTarget[i])
+                {
+                    b.Position[i] = b.TargetPosition[i];
+                    b.Rotation[i] = b.TargetRotation[i];
+                    b.SyncCenterFromOrigin(i);
+                    b.UpdateWorldInertia(i);
+                    b.HasKinematicTarget[i] = false;
+                }
+            }
+        }
+    }
+}

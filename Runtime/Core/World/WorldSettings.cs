@@ -1,0 +1,99 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum
+{
+    /// <summary>
+    /// World-wide simulation settings. Start from <see cref="Default"/>; every field documents
+    /// its default and unit. Checked by <see cref="Validate"/> whenever a world takes them.
+    /// </summary>
+    public struct WorldSettings
+    {
+        /// <summary>Gravity, m/s^2. Default: (0, -9.81, 0).</summary>
+        public Vector3 Gravity;
+        /// <summary>The constraint solver. Default: <see cref="SolverType.Tgs"/>.</summary>
+        public SolverType Solver;
+        /// <summary>
+        /// Velocity iterations: per step for PGS, per substep for TGS. &gt;= 1. Default: 4.
+        /// </summary>
+        public int Iterations;
+        /// <summary>Substeps per step (TGS; PGS ignores it). &gt;= 1. Default: 4.</summary>
+        public int Substeps;
+        /// <summary>Position iterations of PGS (split-impulse / NGS correction). &gt;= 0. Default: 2.</summary>
+        public int PositionIterations;
+        /// <summary>Reuse last step's impulses as the starting guess. Default: true.</summary>
+        public bool WarmStarting;
+        /// <summary>Solve the normal rows of a 2-4 point manifold together (block solver). Default: false.</summary>
+        public bool BlockSolver;
+        /// <summary>Let resting islands fall asleep. Default: true.</summary>
+        public bool EnableSleeping;
+        /// <summary>Seconds a body must stay below the sleep thresholds before its island sleeps. Default: 0.5 s.</summary>
+        public float TimeToSleep;
+        /// <summary>Linear speed below which a body counts as resting, m/s. Default: 0.05 m/s.</summary>
+        public float SleepLinearVelocity;
+        /// <summary>Angular speed below which a body counts as resting, rad/s. Default: 0.05 rad/s.</summary>
+        public float SleepAngularVelocity;
+        /// <summary>Worker threads for the parallel stages; 1 runs everything on the caller's thread. Default: 1.</summary>
+        public int Threads;
+        /// <summary>Bit-identical results for any thread count (fixed orders, no racy sums). Default: true.</summary>
+        public bool Deterministic;
+        /// <summary>Contact stiffness of the soft contact constraint, Hz. Default: 30 Hz.</summary>
+        public float ContactHertz;
+        /// <summary>Damping ratio of the soft contact constraint (1 = critical). Default: 10.</summary>
+        public float ContactDampingRatio;
+        /// <summary>The fastest the solver may push overlapping bodies apart, m/s. Default: 3 m/s.</summary>
+        public float MaxContactPushSpeed;
+        /// <summary>Penetration allowed without correction, m. Default: 0.005 m.</summary>
+        public float LinearSlop;
+        /// <summary>Relative normal speed below which restitution is ignored, m/s. Default: 1 m/s.</summary>
+        public float RestitutionThreshold;
+        /// <summary>Speed cap for any body, m/s (keeps a blown-up scene finite). Default: 400 m/s.</summary>
+        public float MaxLinearSpeed;
+
+        /// <summary>The defaults documented on each field.</summary>
+        public static WorldSettings Default => new WorldSettings
+        {
+            Gravity = new Vector3(0, -9.81f, 0),
+            Solver = SolverType.Tgs,
+            Iterations = 4,
+            Substeps = 4,
+            PositionIterations = 2,
+            WarmStarting = true,
+            BlockSolver = false,
+            EnableSleeping = true,
+            TimeToSleep = 0.5f,
+            SleepLinearVelocity = 0.05f,
+            SleepAngularVelocity = 0.05f,
+            Threads = 1,
+            Deterministic = true,
+            ContactHertz = 30f,
+            ContactDampingRatio = 10f,
+            MaxContactPushSpeed = 3f,
+            LinearSlop = 0.005f,
+            RestitutionThreshold = 1f,
+            MaxLinearSpeed = 400f,
+        };
+
+        /// <summary>Throws an <see cref="ArgumentException"/> naming the first bad field.</summary>
+        public readonly void Validate()
+        {
+            Mathematics.Validate.Finite(Gravity, "settings.Gravity");
+            if (Solver != SolverType.Pgs && Solver != SolverType.Tgs)
+                throw new ArgumentException($"settings.Solver must be Pgs or Tgs, got {Solver}.", nameof(Solver));
+            if (Iterations < 1) throw new ArgumentException($"settings.Iterations must be >= 1, got {Iterations}.", nameof(Iterations));
+            if (Substeps < 1) throw new ArgumentException($"settings.Substeps must be >= 1, got {Substeps}.", nameof(Substeps));
+            if (PositionIterations < 0) throw new ArgumentException($"settings.PositionIterations must be >= 0, got {PositionIterations}.", nameof(PositionIterations));
+            if (Threads < 1) throw new ArgumentException($"settings.Threads must be >= 1, got {Threads}.", nameof(Threads));
+            Mathematics.Validate.Positive(TimeToSleep, "settings.TimeToSleep");
+            Mathematics.Validate.NonNegative(SleepLinearVelocity, "settings.SleepLinearVelocity");
+            Mathematics.Validate.NonNegative(SleepAngularVelocity, "settings.SleepAngularVelocity");
+            Mathematics.Validate.Positive(ContactHertz, "settings.ContactHertz");
+            Mathematics.Validate.NonNegative(ContactDampingRatio, "settings.ContactDampingRatio");
+            Mathematics.Validate.Positive(MaxContactPushSpeed, "settings.MaxContactPushSpeed");
+            Mathematics.Validate.NonNegative(LinearSlop, "settings.LinearSlop");
+            Mathematics.Validate.NonNegative(RestitutionThreshold, "settings.RestitutionThreshold");
+            Mathematics.Validate.Positive(MaxLinearSpeed, "settings.MaxLinearSpeed");
+        }
+    }
+}
