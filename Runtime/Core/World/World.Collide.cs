@@ -24,5 +24,7 @@ namespace Fulcrum
         void UpdateContacts() { }
 
         void SolveContinuous(float dt) { }
+
+        void PublishEvents() { }
     }
 }

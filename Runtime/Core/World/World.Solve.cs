@@ -13,6 +13,6 @@ namespace Fulcrum
             Integrator.IntegratePositions(Bodies, dt);
         }
 
-        void UpdateSleepAndEvents(float dt) { }
+        void UpdateSleep(float dt) { }
     }
 }

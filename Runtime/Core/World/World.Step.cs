@@ -38,7 +38,8 @@ namespace Fulcrum
                 t = Mark(StepStage.SoftBodies, t);
                 SolveContinuous(dt);
                 t = Mark(StepStage.Continuous, t);
-                UpdateSleepAndEvents(dt);
+                UpdateSleep(dt);
+                PublishEvents();
                 Mark(StepStage.SleepAndEvents, t);
 
                 EndStep();

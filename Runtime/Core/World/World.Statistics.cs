@@ -1,0 +1,31 @@
+namespace Fulcrum
+{
+    public sealed partial class World
+    {
+        // Written by the stages that know them; read by traces, the runner and tests.
+        internal float StatMaxPenetration;
+        internal int StatContactCount;
+        internal float StatMaxJointError;
+
+        /// <summary>The deepest penetration among the contacts of the last step, metres (&gt;= 0).</summary>
+        public float MaxPenetration => StatMaxPenetration;
+
+        /// <summary>Contact points (in touching manifolds) in the last step.</summary>
+        public int ContactCount => StatContactCount;
+
+        /// <summary>The largest position error of any joint after the last step, metres.</summary>
+        public float MaxJointError => StatMaxJointError;
+
+        /// <summary>Bodies currently awake (dynamic and kinematic).</summary>
+        public int AwakeBodyCount
+        {
+            get
+            {
+                int n = 0;
+                for (int k = 0; k < Bodies.ActiveCount; k++)
+                    if (Bodies.Awake[Bodies.Active[k]]) n++;
+                return n;
+            }
+        }
+    }
+}
