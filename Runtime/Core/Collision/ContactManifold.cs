@@ -69,18 +69,15 @@ namespace Fulcrum.Collision
         /// <summary>Accumulated rolling-friction angular impulse (warm start).</summary>
         public Vector3 RollingImpulse;
 
-        /// <summary>Point <paramref name="i"/> by reference (0..3).</summary>
-        public ref ContactPoint this[int i]
+        /// <summary>Point <paramref name="i"/> (0..3) of <paramref name="m"/> by reference.</summary>
+        public static ref ContactPoint Point(ref ContactManifold m, int i)
         {
-            get
+            switch (i)
             {
-                switch (i)
-                {
-                    case 0: return ref Point0;
-                    case 1: return ref Point1;
-                    case 2: return ref Point2;
-                    default: return ref Point3;
-                }
+                case 0: return ref m.Point0;
+                case 1: return ref m.Point1;
+                case 2: return ref m.Point2;
+                default: return ref m.Point3;
             }
         }
     }

@@ -7,6 +7,14 @@ namespace Fulcrum
         internal int StatContactCount;
         internal float StatMaxJointError;
 
+        // Cleared at the start of every step; each stage raises what it measures.
+        void ResetStatistics()
+        {
+            StatMaxPenetration = 0;
+            StatContactCount = 0;
+            StatMaxJointError = 0;
+        }
+
         /// <summary>The deepest penetration among the contacts of the last step, metres (&gt;= 0).</summary>
         public float MaxPenetration => StatMaxPenetration;
 

@@ -24,6 +24,7 @@ namespace Fulcrum
                 _profile = default;
                 long start = Stopwatch.GetTimestamp();
                 long t = start;
+                ResetStatistics();
                 BeginStep(dt);
 
                 UpdateBroadPhase();
