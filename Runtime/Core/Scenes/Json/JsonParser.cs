@@ -187,7 +187,7 @@ namespace Fulcrum.Scenes
 
         void Expect(string word, string path)
         {
-            if (string.CompareOrdinal(_text, _pos, word, 0, word.Length) != 0)
+            if (_pos + word.Length > _text.Length || string.CompareOrdinal(_text, _pos, word, 0, word.Length) != 0)
                 Fail(path, $"unexpected {Describe()}, expected a value");
             _pos += word.Length;
             if (char.IsLetterOrDigit(Peek())) Fail(path, $"unexpected {Describe()} after '{word}'");
