@@ -58,5 +58,10 @@ public static class Cli
             error.WriteLine("fulcrum: error: " + e.Message);
             return e.ExitCode;
         }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            error.WriteLine("fulcrum: error: " + e.Message);
+            return ExitScene;
+        }
     }
 }

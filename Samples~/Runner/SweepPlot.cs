@@ -31,7 +31,12 @@ static class SweepPlot
         }
         // A zero error (the reference setting itself) sits one decade below the smallest non-zero one.
         floor = floor == double.MaxValue ? 1e-9 : floor / 10;
-        for (int i = 0; i < ys.Length; i++) ys[i] = Math.Max(ys[i], floor);
+        bool clamped = false;
+        for (int i = 0; i < ys.Length; i++)
+        {
+            clamped |= ys[i] < floor;
+            ys[i] = Math.Max(ys[i], floor);
+        }
         var x = new Axis(xs);
         var y = new Axis(ys);
 
@@ -72,7 +77,7 @@ static class SweepPlot
             svg.Append($"<polyline fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.5\" points=\"{line.ToString().TrimEnd()}\"/>\n");
             foreach (int i in mine)
             {
-                svg.Append(Inv($"<circle cx=\"{Px(xs[i]):F1}\" cy=\"{Py(ys[i]):F1}\" r=\"3.5\" fill=\"{colour}\"><title>{Describe(points[i])}</title></circle>\n"));
+                svg.Append(Inv($"<circle cx=\"{Px(xs[i]):F1}\" cy=\"{Py(ys[i]):F1}\" r=\"3.5\" fill=\"{colour}\"><title>{Describe(points[i])}, error {error(points[i]):G4}</title></circle>\n"));
                 svg.Append(Inv($"<text x=\"{Px(xs[i]) + 5:F1}\" y=\"{Py(ys[i]) - 5:F1}\" font-size=\"9\" fill=\"{colour}\">{Setting(points[i])}</text>\n"));
             }
             string name = solver == SolverType.Pgs ? "PGS" : "TGS";
@@ -96,6 +101,8 @@ static class SweepPlot
             svg.Append(Inv($"<circle cx=\"{Px(xs[i]):F1}\" cy=\"{Py(ys[i]):F1}\" r=\"7\" fill=\"none\" stroke=\"#2ca02c\" stroke-width=\"2\"/>\n"));
         svg.Append(Inv($"<circle cx=\"{Width - Right + 27}\" cy=\"{legendY}\" r=\"6\" fill=\"none\" stroke=\"#2ca02c\" stroke-width=\"2\"/>\n"));
         svg.Append(Inv($"<text x=\"{Width - Right + 46}\" y=\"{legendY + 4}\">Pareto front</text>\n"));
+        if (clamped)
+            svg.Append(Inv($"<text x=\"{Left}\" y=\"{Height - 4}\" font-size=\"10\" fill=\"#666\">an error of 0 is drawn at {Label(floor)}</text>\n"));
         svg.Append("</svg>\n");
         return svg.ToString();
     }

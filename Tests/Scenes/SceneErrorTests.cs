@@ -122,6 +122,14 @@ namespace Fulcrum.Tests.Scenes
         }
 
         [Test]
+        public void A_rejected_generator_does_not_also_orphan_the_joints_naming_its_bodies()
+        {
+            string text = SceneSamples.OneBall().Replace("\"bodies\"",
+                "\"generators\": [{ \"type\": \"chain\", \"count\": 4, \"spacing\": -1 }], \"joints\": [{ \"type\": \"ball\", \"bodyA\": \"ball\", \"bodyB\": \"chain/3\" }], \"bodies\"");
+            Assert.That(OnlyError(text).ToString(), Does.StartWith("$.generators[0].spacing: must be >= 0, got -1"));
+        }
+
+        [Test]
         public void Every_error_is_reported_at_once_structural_ones_first()
         {
             string text = """

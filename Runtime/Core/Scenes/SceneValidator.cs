@@ -37,6 +37,7 @@ namespace Fulcrum.Scenes
         {
             public readonly List<SceneError> Errors = new List<SceneError>();
             SceneDocument _doc = null!;
+            bool _generatorsExpanded;
 
             void Error(string path, string message) => Errors.Add(new SceneError(path, message));
 
@@ -66,6 +67,7 @@ namespace Fulcrum.Scenes
                 for (int i = 0; i < doc.Bodies.Count; i++) Body(doc.Bodies[i], JsonPath.Index("$.bodies", i));
                 bool generatorsOk = Generators();
                 HashSet<string> bodies = BodyNames(generatorsOk);
+                _generatorsExpanded = generatorsOk;
                 for (int i = 0; i < doc.Joints.Count; i++) Joint(doc.Joints[i], JsonPath.Index("$.joints", i), bodies);
                 if (generatorsOk) JointNames();
                 var softNames = new Dictionary<string, string>();
@@ -279,13 +281,24 @@ namespace Fulcrum.Scenes
                 }
             }
 
+            // When a generator was rejected its bodies were never made: a name that would be one
+            // of them gets the benefit of the doubt rather than a second, misleading error.
+            bool Exists(string name, HashSet<string> bodies)
+            {
+                if (bodies.Contains(name)) return true;
+                if (_generatorsExpanded) return false;
+                foreach (SceneGenerator g in _doc.Generators)
+                    if (name.StartsWith(g.Prefix + "/", StringComparison.Ordinal)) return true;
+                return false;
+            }
+
             void Joint(SceneJoint j, string path, HashSet<string> bodies)
             {
                 if (j == null) { Error(path, "must not be null"); return; }
                 if (j.Name != null && j.Name.Length == 0) Error(P(path, "name"), "must be a non-empty name (or left out)");
                 if (j.BodyA == null && j.BodyB == null) Error(path, "bodyA and bodyB cannot both be the world (null)");
-                if (j.BodyA != null && !bodies.Contains(j.BodyA)) Error(P(path, "bodyA"), $"no body named '{j.BodyA}'");
-                if (j.BodyB != null && !bodies.Contains(j.BodyB)) Error(P(path, "bodyB"), $"no body named '{j.BodyB}'");
+                if (j.BodyA != null && !Exists(j.BodyA, bodies)) Error(P(path, "bodyA"), $"no body named '{j.BodyA}'");
+                if (j.BodyB != null && !Exists(j.BodyB, bodies)) Error(P(path, "bodyB"), $"no body named '{j.BodyB}'");
                 if (j.BodyA != null && j.BodyA == j.BodyB) Error(P(path, "bodyB"), "a joint needs two different bodies");
                 Finite(j.AnchorA, P(path, "anchorA"));
                 Finite(j.AnchorB, P(path, "anchorB"));
@@ -355,7 +368,7 @@ namespace Fulcrum.Scenes
                     if (Finite(pin.Min, P(pp, "min")) && Finite(pin.Max, P(pp, "max"))
                         && (pin.Max.X < pin.Min.X || pin.Max.Y < pin.Min.Y || pin.Max.Z < pin.Min.Z))
                         Error(P(pp, "max"), $"must be >= min on every axis, got min {V(pin.Min)} and max {V(pin.Max)}");
-                    if (pin.To != null && !bodies.Contains(pin.To)) Error(P(pp, "to"), $"no body named '{pin.To}'");
+                    if (pin.To != null && !Exists(pin.To, bodies)) Error(P(pp, "to"), $"no body named '{pin.To}'");
                 }
                 string f = P(path, "initialDeformation");
                 if (!s.InitialDeformation.IsFinite) Error(f, "must be finite");
