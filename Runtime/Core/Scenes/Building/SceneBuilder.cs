@@ -1,0 +1,95 @@
+using System.Collections.Generic;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Scenes
+{
+    /// <summary>
+    /// Builds a <see cref="World"/> from a <see cref="SceneDocument"/>: world settings from
+    /// gravity and solver, then every body (written-out and generated) with its shapes,
+    /// material and mass. Joints and soft bodies are returned as data in the
+    /// <see cref="SceneInstance"/>.
+    /// </summary>
+    public static class SceneBuilder
+    {
+        /// <summary>Builds the scene on <see cref="WorldSettings.Default"/>.</summary>
+        public static SceneInstance Build(SceneDocument document) => Build(document, WorldSettings.Default);
+
+        /// <summary>
+        /// Builds the scene on <paramref name="settings"/>, whose gravity, solver, iterations
+        /// and substeps the scene overrides (the rest, threads for example, are kept). Throws a
+        /// <see cref="SceneException"/> when the document is invalid, and a
+        /// <see cref="System.NotSupportedException"/> naming the path of a shape Core cannot
+        /// build yet; in both cases no world is returned.
+        /// </summary>
+        public static SceneInstance Build(SceneDocument document, WorldSettings settings)
+        {
+            SceneValidator.ThrowIfInvalid(document);
+            settings.Gravity = document.Gravity;
+            settings.Solver = document.Solver.Type;
+            settings.Iterations = document.Solver.Iterations;
+            settings.Substeps = document.Solver.Substeps;
+
+            SceneExpansion e = document.Expand();
+            // Every geometry first: an unsupported shape fails before a world exists.
+            var shapes = new List<ShapeDef>[e.Bodies.Count];
+            for (int i = 0; i < e.Bodies.Count; i++)
+            {
+                string path = e.BodySources[i].StartsWith("$.bodies", System.StringComparison.Ordinal)
+                    ? JsonPath.Member(e.BodySources[i], "shape")
+                    : e.BodySources[i];
+                shapes[i] = ShapesOf(e.Bodies[i], document.FindMaterial(e.Bodies[i].Material), path);
+            }
+
+            var world = new World(settings);
+            var handles = new List<BodyHandle>(e.Bodies.Count);
+            for (int i = 0; i < e.Bodies.Count; i++)
+            {
+                SceneBody b = e.Bodies[i];
+                BodyDef def = BodyDef.Default;
+                def.Type = b.Type;
+                def.Name = b.Name;
+                def.Position = b.Position;
+                def.Rotation = b.Rotation;
+                def.LinearVelocity = b.Velocity;
+                def.AngularVelocity = b.AngularVelocity;
+                def.Mass = b.Mass ?? 0;
+                def.Ccd = b.Ccd;
+                BodyHandle h = world.CreateBody(def);
+                foreach (ShapeDef shape in shapes[i]) world.AddShape(h, shape);
+                handles.Add(h);
+            }
+            return new SceneInstance(world, document, e, handles);
+        }
+
+        static List<ShapeDef> ShapesOf(SceneBody body, SceneMaterial? material, string path)
+        {
+            var list = new List<ShapeDef>(1);
+            ShapeDef template = ShapeDef.Default;
+            if (material != null)
+            {
+                template.Friction = material.Friction;
+                template.Restitution = material.Restitution;
+                if (material.Density is float density) template.Density = density;
+            }
+            if (body.Shape is SceneCompound compound)
+            {
+                for (int c = 0; c < compound.Children.Count; c++)
+                {
+                    SceneCompoundChild child = compound.Children[c];
+                    string childPath = JsonPath.Member(JsonPath.Index(JsonPath.Member(path, "children"), c), "shape");
+                    ShapeDef def = template;
+                    def.Geometry = SceneGeometry.Create(child.Shape!, childPath);
+                    def.LocalPose = new Pose(child.Position, child.Rotation);
+                    list.Add(def);
+                }
+            }
+            else
+            {
+                ShapeDef def = template;
+                def.Geometry = SceneGeometry.Create(body.Shape!, path);
+                list.Add(def);
+            }
+            return list;
+        }
+    }
+}

@@ -1,0 +1,50 @@
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace Fulcrum.Scenes
+{
+    /// <summary>
+    /// <c>{"type": "pyramid", "count": n, "size": [1, 1, 1], "axis": "x", "at": [0, 0, 0], "spacing": 0}</c>:
+    /// a flat pyramid of boxes in the vertical plane along <c>axis</c>. The bottom row has
+    /// <c>count</c> boxes centred on <c>at</c> and resting on y = at.y; each row above has one
+    /// box fewer and sits on the row below, centred; n (n + 1) / 2 boxes in all. <c>size</c> is
+    /// [along, up, across]; <c>spacing</c> is the gap between neighbours in a row (default 0).
+    /// Bodies are numbered row by row from the bottom, each row in the +axis direction.
+    /// </summary>
+    public sealed class ScenePyramid : SceneGenerator
+    {
+        /// <summary>A pyramid with size [1, 1, 1] and spacing 0 along x.</summary>
+        public ScenePyramid() : base(Vector3.One, 0f) { }
+
+        /// <inheritdoc/>
+        public override SceneGeneratorType Type => SceneGeneratorType.Pyramid;
+
+        /// <summary><c>count</c>: boxes in the bottom row (and number of rows), &gt;= 1. Required.</summary>
+        public int Count { get; set; }
+
+        /// <summary><c>axis</c>: the direction of the rows. Default: x.</summary>
+        public SceneAxis Axis { get; set; }
+
+        /// <inheritdoc/>
+        public override long BodyCount => (long)Count * (Count + 1) / 2;
+
+        /// <inheritdoc/>
+        public override void Expand(List<SceneBody> bodies, List<SceneJoint> joints)
+        {
+            Vector3 along = SceneAxisFrame.Along(Axis);
+            Vector3 worldSize = SceneAxisFrame.ToWorld(Axis, Size);
+            float pitch = Size.X + Spacing;
+            int index = 0;
+            for (int row = 0; row < Count; row++)
+            {
+                int n = Count - row;
+                float y = At.Y + 0.5f * Size.Y + row * Size.Y;
+                for (int j = 0; j < n; j++)
+                {
+                    Vector3 p = At + along * ((j - 0.5f * (n - 1)) * pitch);
+                    bodies.Add(NewBody(index++, new Vector3(p.X, y, p.Z), BoxOf(worldSize)));
+                }
+            }
+        }
+    }
+}

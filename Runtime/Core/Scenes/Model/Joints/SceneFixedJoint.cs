@@ -1,0 +1,9 @@
+namespace Fulcrum.Scenes
+{
+    /// <summary><c>{"type": "fixed"}</c>: the bodies keep their relative pose at creation.</summary>
+    public sealed class SceneFixedJoint : SceneJoint
+    {
+        /// <inheritdoc/>
+        public override SceneJointType Type => SceneJointType.Fixed;
+    }
+}

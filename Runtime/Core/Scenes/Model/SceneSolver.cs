@@ -1,0 +1,15 @@
+namespace Fulcrum.Scenes
+{
+    /// <summary>The <c>solver</c> object of a scene; defaults follow <see cref="WorldSettings.Default"/>.</summary>
+    public sealed class SceneSolver
+    {
+        /// <summary><c>type</c>: <c>"pgs"</c> or <c>"tgs"</c>. Default: tgs.</summary>
+        public SolverType Type { get; set; } = SolverType.Tgs;
+
+        /// <summary><c>iterations</c>: velocity iterations (per step for PGS, per substep for TGS), &gt;= 1. Default: 4.</summary>
+        public int Iterations { get; set; } = 4;
+
+        /// <summary><c>substeps</c>: TGS substeps per step (PGS ignores it), &gt;= 1. Default: 4.</summary>
+        public int Substeps { get; set; } = 4;
+    }
+}

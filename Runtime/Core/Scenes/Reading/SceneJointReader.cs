@@ -1,0 +1,95 @@
+using System.Numerics;
+
+namespace Fulcrum.Scenes
+{
+    /// <summary>Reads one entry of <c>joints</c>: the common fields, then those of its type.</summary>
+    internal static class SceneJointReader
+    {
+        public static SceneJoint? Read(JsonValue v, SceneDiagnostics d)
+        {
+            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a joint object");
+            if (r == null) return null;
+            string? type = r.String("type", required: true);
+            if (type == null) return null;
+            if (!SceneNames.TryParse(type, out SceneJointType kind))
+            {
+                d.Add(JsonPath.Member(v.Path, "type"), $"unknown joint type '{type}' (expected ball, hinge, distance, fixed, prismatic or coneTwist)", v["type"]);
+                return null;
+            }
+            SceneJoint joint;
+            switch (kind)
+            {
+                case SceneJointType.Ball:
+                    joint = new SceneBallJoint();
+                    break;
+                case SceneJointType.Fixed:
+                    joint = new SceneFixedJoint();
+                    break;
+                case SceneJointType.Hinge:
+                    joint = new SceneHingeJoint
+                    {
+                        AxisA = r.Vector("axisA", Vector3.Zero, required: true),
+                        AxisB = r.Vector("axisB", Vector3.Zero, required: true),
+                        LowerDeg = r.OptionalFloat("lowerDeg"),
+                        UpperDeg = r.OptionalFloat("upperDeg"),
+                        MotorSpeed = r.Float("motorSpeed", 0),
+                        MaxMotorTorque = r.Float("maxMotorTorque", 0),
+                    };
+                    break;
+                case SceneJointType.Distance:
+                    joint = new SceneDistanceJoint
+                    {
+                        MinLength = r.OptionalFloat("minLength"),
+                        MaxLength = r.OptionalFloat("maxLength"),
+                        StiffnessHz = r.Float("stiffnessHz", 0),
+                        Damping = r.Float("damping", 0),
+                    };
+                    break;
+                case SceneJointType.Prismatic:
+                    joint = new ScenePrismaticJoint
+                    {
+                        AxisA = r.Vector("axisA", Vector3.Zero, required: true),
+                        Lower = r.OptionalFloat("lower"),
+                        Upper = r.OptionalFloat("upper"),
+                    };
+                    break;
+                default:
+                    joint = new SceneConeTwistJoint
+                    {
+                        AxisA = r.Vector("axisA", Vector3.Zero, required: true),
+                        AxisB = r.Vector("axisB", Vector3.Zero, required: true),
+                        ConeDeg = r.Float("coneDeg", 0, required: true),
+                        TwistDeg = r.Float("twistDeg", 0, required: true),
+                    };
+                    break;
+            }
+            joint.Name = r.String("name");
+            // bodyA and bodyB must be present; null names the world.
+            r.Known("bodyA");
+            r.Known("bodyB");
+            joint.BodyA = BodyName(v, "bodyA", d);
+            joint.BodyB = BodyName(v, "bodyB", d);
+            joint.AnchorA = r.Vector("anchorA", Vector3.Zero);
+            joint.AnchorB = r.Vector("anchorB", Vector3.Zero);
+            joint.BreakForce = r.OptionalFloat("breakForce");
+            joint.BreakTorque = r.OptionalFloat("breakTorque");
+            r.Finish();
+            return joint;
+        }
+
+        static string? BodyName(JsonValue joint, string key, SceneDiagnostics d)
+        {
+            JsonValue? v = joint[key];
+            string path = JsonPath.Member(joint.Path, key);
+            if (v == null)
+            {
+                d.Add(path, "missing required field (a body name, or null for the world)", joint);
+                return null;
+            }
+            if (v.Kind == JsonKind.Null) return null;
+            if (v.Kind == JsonKind.String) return v.AsString;
+            d.Add(path, $"expected a body name or null, got {v.KindName}", v);
+            return null;
+        }
+    }
+}

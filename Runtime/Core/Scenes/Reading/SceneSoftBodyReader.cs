@@ -1,0 +1,93 @@
+using System.Collections.Generic;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Scenes
+{
+    /// <summary>Reads one entry of <c>softBodies</c>.</summary>
+    internal static class SceneSoftBodyReader
+    {
+        public static SceneSoftBody? Read(JsonValue v, SceneDiagnostics d)
+        {
+            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a soft body object");
+            if (r == null) return null;
+            var s = new SceneSoftBody { Name = r.String("name", required: true) ?? "" };
+            if (r.Take("mesh", required: true) is JsonValue mesh) s.Mesh = ReadMesh(mesh, d);
+            if (r.Take("material", required: true) is JsonValue material) s.Material = ReadMaterial(material, d);
+            s.Position = r.Vector("position", s.Position);
+            foreach (JsonValue p in r.Array("pinned"))
+                if (ReadPin(p, d) is ScenePin pin) s.Pinned.Add(pin);
+            if (r.Take("initialDeformation") is JsonValue f && ReadMatrix(f, d, out Mat3 m)) s.InitialDeformation = m;
+            if (r.Vectors("probes") is List<Vector3> probes) s.Probes.AddRange(probes);
+            r.Finish();
+            return s;
+        }
+
+        static SceneSoftMesh? ReadMesh(JsonValue v, SceneDiagnostics d)
+        {
+            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a mesh object");
+            if (r == null) return null;
+            string? type = r.String("type", required: true);
+            if (type == null) return null;
+            if (!SceneNames.TryParse(type, out SceneSoftMeshType kind))
+            {
+                d.Add(JsonPath.Member(v.Path, "type"), $"unknown soft mesh type '{type}' (expected box)", v["type"]);
+                return null;
+            }
+            var mesh = new SceneSoftMesh { Type = kind };
+            mesh.Size = r.Vector("size", Vector3.Zero, required: true);
+            if (r.Ints("cells", 3) is int[] cells) mesh.Cells = cells;
+            r.Finish();
+            return mesh;
+        }
+
+        static SceneSoftMaterial? ReadMaterial(JsonValue v, SceneDiagnostics d)
+        {
+            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a material object");
+            if (r == null) return null;
+            var m = new SceneSoftMaterial();
+            if (r.String("model") is string model)
+            {
+                if (SceneNames.TryParse(model, out SceneSoftModel k)) m.Model = k;
+                else d.Add(JsonPath.Member(v.Path, "model"), $"unknown model '{model}' (expected stable-neo-hookean or neo-hookean)", v["model"]);
+            }
+            m.YoungsModulus = r.OptionalFloat("youngsModulus");
+            m.PoissonRatio = r.OptionalFloat("poissonRatio");
+            m.Mu = r.OptionalFloat("mu");
+            m.Lambda = r.OptionalFloat("lambda");
+            m.Density = r.Float("density", m.Density);
+            r.Finish();
+            return m;
+        }
+
+        static ScenePin? ReadPin(JsonValue v, SceneDiagnostics d)
+        {
+            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a pin object {min, max, to}");
+            if (r == null) return null;
+            var pin = new ScenePin
+            {
+                Min = r.Vector("min", Vector3.Zero, required: true),
+                Max = r.Vector("max", Vector3.Zero, required: true),
+                To = r.String("to"),
+            };
+            r.Finish();
+            return pin;
+        }
+
+        // Rows [[a,b,c],[d,e,f],[g,h,i]], as a matrix is written on paper.
+        static bool ReadMatrix(JsonValue v, SceneDiagnostics d, out Mat3 m)
+        {
+            m = Mat3.Identity;
+            if (v.Kind != JsonKind.Array || v.Items.Count != 3)
+            {
+                d.Add(v.Path, $"expected a 3x3 matrix as three rows [[a,b,c],[d,e,f],[g,h,i]], got {JsonObjectReader.Describe(v)}", v);
+                return false;
+            }
+            bool ok = JsonObjectReader.ReadVector(v.Items[0], d, out Vector3 r0);
+            ok &= JsonObjectReader.ReadVector(v.Items[1], d, out Vector3 r1);
+            ok &= JsonObjectReader.ReadVector(v.Items[2], d, out Vector3 r2);
+            if (ok) m = Mat3.FromRows(r0, r1, r2);
+            return ok;
+        }
+    }
+}

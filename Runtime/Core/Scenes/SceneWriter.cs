@@ -1,0 +1,240 @@
+using System.Collections.Generic;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Scenes
+{
+    /// <summary>
+    /// Turns a <see cref="SceneDocument"/> back into JSON such that reading the text gives an
+    /// equal document: floats are written with round-trip formatting ("R", invariant culture)
+    /// and every field that differs from its default is written. The document-level fields and
+    /// each body's name, type, shape and position are always written; other fields at their
+    /// defaults are left out to keep saved files short. Defaults are compared bit for bit, so
+    /// even -0 survives.
+    /// </summary>
+    internal static class SceneWriter
+    {
+        public static JsonValue Write(SceneDocument doc)
+        {
+            var o = new Obj();
+            o.Add("format", doc.Format);
+            o.Add("gravity", doc.Gravity);
+            o.Add("timestep", doc.Timestep);
+            o.Add("solver", new Obj()
+                .Add("type", SceneNames.Of(doc.Solver.Type))
+                .Add("iterations", doc.Solver.Iterations)
+                .Add("substeps", doc.Solver.Substeps).Value);
+            if (doc.Materials.Count > 0)
+            {
+                var materials = new Obj();
+                foreach (SceneMaterial m in doc.Materials)
+                {
+                    var mo = new Obj().Add("friction", m.Friction).Add("restitution", m.Restitution);
+                    if (m.Density is float density) mo.Add("density", density);
+                    materials.Add(m.Name, mo.Value);
+                }
+                o.Add("materials", materials.Value);
+            }
+            if (doc.Bodies.Count > 0) o.Add("bodies", ListOf(doc.Bodies, Body));
+            if (doc.Joints.Count > 0) o.Add("joints", ListOf(doc.Joints, Joint));
+            if (doc.SoftBodies.Count > 0) o.Add("softBodies", ListOf(doc.SoftBodies, SoftBody));
+            if (doc.Generators.Count > 0) o.Add("generators", ListOf(doc.Generators, Generator));
+            return o.Value;
+        }
+
+        static JsonValue Body(SceneBody b)
+        {
+            var o = new Obj().Add("name", b.Name).Add("type", SceneNames.Of(b.Type));
+            if (b.Mass is float mass) o.Add("mass", mass);
+            if (b.Material != null) o.Add("material", b.Material);
+            o.Add("shape", b.Shape != null ? Shape(b.Shape) : JsonValue.Null());
+            o.Add("position", b.Position);
+            if (!Same(b.Rotation, Quaternion.Identity)) o.Add("rotation", b.Rotation);
+            if (!Same(b.Velocity, Vector3.Zero)) o.Add("velocity", b.Velocity);
+            if (!Same(b.AngularVelocity, Vector3.Zero)) o.Add("angularVelocity", b.AngularVelocity);
+            if (b.Ccd) o.Add("ccd", true);
+            return o.Value;
+        }
+
+        static JsonValue Shape(SceneShape s)
+        {
+            var o = new Obj().Add("type", SceneNames.Of(s.Type));
+            switch (s)
+            {
+                case SceneSphere sphere: o.Add("radius", sphere.Radius); break;
+                case SceneBox box: o.Add("halfExtents", box.HalfExtents); break;
+                case SceneCapsule capsule: o.Add("radius", capsule.Radius).Add("halfHeight", capsule.HalfHeight); break;
+                case SceneConvex convex: o.Add("points", Points(convex.Points)); break;
+                case ScenePlane plane: o.Add("normal", plane.Normal).Add("offset", plane.Offset); break;
+                case SceneMesh mesh:
+                {
+                    o.Add("vertices", Points(mesh.Vertices));
+                    var triangles = new List<JsonValue>();
+                    for (int i = 0; i + 2 < mesh.Triangles.Count; i += 3)
+                        triangles.Add(JsonValue.Array(new List<JsonValue>
+                        {
+                            JsonValue.From(mesh.Triangles[i]), JsonValue.From(mesh.Triangles[i + 1]), JsonValue.From(mesh.Triangles[i + 2]),
+                        }));
+                    o.Add("triangles", JsonValue.Array(triangles));
+                    break;
+                }
+                case SceneCompound compound:
+                    o.Add("children", ListOf(compound.Children, c =>
+                    {
+                        var co = new Obj().Add("shape", c.Shape != null ? Shape(c.Shape) : JsonValue.Null()).Add("position", c.Position);
+                        if (!Same(c.Rotation, Quaternion.Identity)) co.Add("rotation", c.Rotation);
+                        return co.Value;
+                    }));
+                    break;
+            }
+            return o.Value;
+        }
+
+        static JsonValue Joint(SceneJoint j)
+        {
+            var o = new Obj().Add("type", SceneNames.Of(j.Type));
+            if (j.Name != null) o.Add("name", j.Name);
+            o.Add("bodyA", j.BodyA != null ? JsonValue.From(j.BodyA) : JsonValue.Null());
+            o.Add("bodyB", j.BodyB != null ? JsonValue.From(j.BodyB) : JsonValue.Null());
+            o.Add("anchorA", j.AnchorA).Add("anchorB", j.AnchorB);
+            switch (j)
+            {
+                case SceneHingeJoint h:
+                    o.Add("axisA", h.AxisA).Add("axisB", h.AxisB);
+                    if (h.LowerDeg is float lo) o.Add("lowerDeg", lo);
+                    if (h.UpperDeg is float hi) o.Add("upperDeg", hi);
+                    if (!Same(h.MotorSpeed, 0)) o.Add("motorSpeed", h.MotorSpeed);
+                    if (!Same(h.MaxMotorTorque, 0)) o.Add("maxMotorTorque", h.MaxMotorTorque);
+                    break;
+                case SceneDistanceJoint d:
+                    if (d.MinLength is float min) o.Add("minLength", min);
+                    if (d.MaxLength is float max) o.Add("maxLength", max);
+                    if (!Same(d.StiffnessHz, 0)) o.Add("stiffnessHz", d.StiffnessHz);
+                    if (!Same(d.Damping, 0)) o.Add("damping", d.Damping);
+                    break;
+                case ScenePrismaticJoint p:
+                    o.Add("axisA", p.AxisA);
+                    if (p.Lower is float lower) o.Add("lower", lower);
+                    if (p.Upper is float upper) o.Add("upper", upper);
+                    break;
+                case SceneConeTwistJoint c:
+                    o.Add("axisA", c.AxisA).Add("axisB", c.AxisB).Add("coneDeg", c.ConeDeg).Add("twistDeg", c.TwistDeg);
+                    break;
+            }
+            if (j.BreakForce is float force) o.Add("breakForce", force);
+            if (j.BreakTorque is float torque) o.Add("breakTorque", torque);
+            return o.Value;
+        }
+
+        static JsonValue SoftBody(SceneSoftBody s)
+        {
+            var o = new Obj().Add("name", s.Name);
+            if (s.Mesh != null)
+                o.Add("mesh", new Obj().Add("type", SceneNames.Of(s.Mesh.Type)).Add("size", s.Mesh.Size).Add("cells", Ints(s.Mesh.Cells)).Value);
+            if (s.Material != null)
+            {
+                SceneSoftMaterial m = s.Material;
+                var mo = new Obj().Add("model", SceneNames.Of(m.Model));
+                if (m.YoungsModulus is float e) mo.Add("youngsModulus", e);
+                if (m.PoissonRatio is float nu) mo.Add("poissonRatio", nu);
+                if (m.Mu is float mu) mo.Add("mu", mu);
+                if (m.Lambda is float lambda) mo.Add("lambda", lambda);
+                mo.Add("density", m.Density);
+                o.Add("material", mo.Value);
+            }
+            o.Add("position", s.Position);
+            if (s.Pinned.Count > 0)
+                o.Add("pinned", ListOf(s.Pinned, p =>
+                {
+                    var po = new Obj().Add("min", p.Min).Add("max", p.Max);
+                    if (p.To != null) po.Add("to", p.To);
+                    return po.Value;
+                }));
+            if (!Same(s.InitialDeformation, Mat3.Identity))
+            {
+                Mat3 f = s.InitialDeformation;
+                o.Add("initialDeformation", JsonValue.Array(new List<JsonValue> { Vec(f.R0), Vec(f.R1), Vec(f.R2) }));
+            }
+            if (s.Probes.Count > 0) o.Add("probes", Points(s.Probes));
+            return o.Value;
+        }
+
+        static JsonValue Generator(SceneGenerator g)
+        {
+            var o = new Obj().Add("type", SceneNames.Of(g.Type));
+            if (g.Name != null) o.Add("name", g.Name);
+            switch (g)
+            {
+                case SceneTower t: o.Add("count", t.Count); break;
+                case ScenePyramid p: o.Add("count", p.Count).Add("axis", SceneNames.Of(p.Axis)); break;
+                case SceneWall w: o.Add("count", w.Count).Add("rows", w.Rows).Add("axis", SceneNames.Of(w.Axis)).Add("staggered", w.Staggered); break;
+                case ScenePile pile: o.Add("grid", Ints(pile.Grid)).Add("shape", SceneNames.Of(pile.Shape)); break;
+                case SceneChain c: o.Add("count", c.Count).Add("axis", SceneNames.Of(c.Axis)).Add("anchor", SceneNames.Of(c.Anchor)); break;
+                case SceneDominoes d: o.Add("count", d.Count).Add("axis", SceneNames.Of(d.Axis)).Add("tipSpeed", d.TipSpeed); break;
+            }
+            o.Add("size", g.Size).Add("at", g.At).Add("spacing", g.Spacing);
+            if (g.Mass is float mass) o.Add("mass", mass);
+            if (g.Material != null) o.Add("material", g.Material);
+            return o.Value;
+        }
+
+        static JsonValue ListOf<T>(List<T> items, System.Func<T, JsonValue> write)
+        {
+            var list = new List<JsonValue>(items.Count);
+            foreach (T item in items) list.Add(write(item));
+            return JsonValue.Array(list);
+        }
+
+        static JsonValue Points(List<Vector3> points)
+        {
+            var list = new List<JsonValue>(points.Count);
+            foreach (Vector3 p in points) list.Add(Vec(p));
+            return JsonValue.Array(list);
+        }
+
+        static JsonValue Ints(int[] values)
+        {
+            var list = new List<JsonValue>(values.Length);
+            foreach (int v in values) list.Add(JsonValue.From(v));
+            return JsonValue.Array(list);
+        }
+
+        static JsonValue Vec(Vector3 v) =>
+            JsonValue.Array(new List<JsonValue> { JsonValue.From(v.X), JsonValue.From(v.Y), JsonValue.From(v.Z) });
+
+        static bool Same(float a, float b) => System.BitConverter.SingleToInt32Bits(a) == System.BitConverter.SingleToInt32Bits(b);
+
+        static bool Same(Vector3 a, Vector3 b) => Same(a.X, b.X) && Same(a.Y, b.Y) && Same(a.Z, b.Z);
+
+        static bool Same(Quaternion a, Quaternion b) => Same(a.X, b.X) && Same(a.Y, b.Y) && Same(a.Z, b.Z) && Same(a.W, b.W);
+
+        static bool Same(in Mat3 a, in Mat3 b) => Same(a.C0, b.C0) && Same(a.C1, b.C1) && Same(a.C2, b.C2);
+
+        // A small builder for an object's members in order.
+        sealed class Obj
+        {
+            readonly List<KeyValuePair<string, JsonValue>> _members = new List<KeyValuePair<string, JsonValue>>();
+
+            public JsonValue Value => JsonValue.Object(_members);
+
+            public Obj Add(string key, JsonValue v)
+            {
+                _members.Add(new KeyValuePair<string, JsonValue>(key, v));
+                return this;
+            }
+
+            public Obj Add(string key, string v) => Add(key, JsonValue.From(v));
+
+            public Obj Add(string key, float v) => Add(key, JsonValue.From(v));
+
+            public Obj Add(string key, int v) => Add(key, JsonValue.From(v));
+
+            public Obj Add(string key, bool v) => Add(key, JsonValue.From(v));
+
+            public Obj Add(string key, Vector3 v) => Add(key, Vec(v));
+
+            public Obj Add(string key, Quaternion q) =>
+                Add(key, JsonValue.Array(new List<JsonValue> { JsonValue.From(q.X), JsonValue.From(q.Y), JsonValue.From(q.Z), JsonValue.From(q.W) }));
+        }
+    }
+}

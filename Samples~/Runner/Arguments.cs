@@ -1,0 +1,119 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+
+namespace Fulcrum.Runner;
+
+/// <summary>
+/// The flags of one command: <c>--name value</c> pairs and positional arguments. Every
+/// accessor checks its value and throws a <see cref="UsageException"/> naming the flag.
+/// </summary>
+sealed class Arguments
+{
+    readonly Dictionary<string, string> _flags = new();
+    readonly List<string> _positional = new();
+
+    public Arguments(string command, IReadOnlyList<string> args, int start, params string[] allowed)
+    {
+        Command = command;
+        for (int i = start; i < args.Count; i++)
+        {
+            string a = args[i];
+            if (!a.StartsWith("--", StringComparison.Ordinal) || a.Length == 2)
+            {
+                _positional.Add(a);
+                continue;
+            }
+            string name = a;
+            string? value = null;
+            int eq = a.IndexOf('=');
+            if (eq > 0)
+            {
+                name = a[..eq];
+                value = a[(eq + 1)..];
+            }
+            if (Array.IndexOf(allowed, name) < 0)
+                throw new UsageException($"{command}: unknown flag '{name}' (expected {string.Join(", ", allowed)})");
+            if (value == null)
+            {
+                if (i + 1 >= args.Count) throw new UsageException($"{name}: missing value");
+                value = args[++i];
+            }
+            if (!_flags.TryAdd(name, value)) throw new UsageException($"{name}: given twice");
+        }
+    }
+
+    public string Command { get; }
+
+    public IReadOnlyList<string> Positional => _positional;
+
+    public bool Has(string flag) => _flags.ContainsKey(flag);
+
+    public string? String(string flag) => _flags.TryGetValue(flag, out string? v) ? v : null;
+
+    /// <summary>The one positional argument the command takes (the scene file).</summary>
+    public string Scene()
+    {
+        if (_positional.Count == 0) throw new UsageException($"{Command}: missing SCENE.json");
+        if (_positional.Count > 1) throw new UsageException($"{Command}: unexpected argument '{_positional[1]}'");
+        return _positional[0];
+    }
+
+    public int? Int(string flag, int min)
+    {
+        if (String(flag) is not string s) return null;
+        if (!int.TryParse(s, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out int v) || v < min)
+            throw new UsageException($"{flag}: expected an integer >= {min}, got '{s}'");
+        return v;
+    }
+
+    public float? PositiveFloat(string flag)
+    {
+        if (String(flag) is not string s) return null;
+        if (!float.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out float v) || !float.IsFinite(v) || !(v > 0))
+            throw new UsageException($"{flag}: expected a number > 0, got '{s}'");
+        return v;
+    }
+
+    public SolverType? Solver(string flag)
+    {
+        if (String(flag) is not string s) return null;
+        return ParseSolver(flag, s);
+    }
+
+    public static SolverType ParseSolver(string flag, string s) =>
+        Scenes.SceneNames.TryParse(s, out SolverType t) ? t : throw new UsageException($"{flag}: expected pgs or tgs, got '{s}'");
+
+    public List<SolverType>? Solvers(string flag)
+    {
+        if (String(flag) is not string s) return null;
+        var list = new List<SolverType>();
+        foreach (string part in Split(flag, s))
+        {
+            SolverType t = ParseSolver(flag, part);
+            if (!list.Contains(t)) list.Add(t);
+        }
+        return list;
+    }
+
+    public List<int>? Ints(string flag, int min)
+    {
+        if (String(flag) is not string s) return null;
+        var list = new List<int>();
+        foreach (string part in Split(flag, s))
+        {
+            if (!int.TryParse(part, NumberStyles.None, CultureInfo.InvariantCulture, out int v) || v < min)
+                throw new UsageException($"{flag}: expected a comma-separated list of integers >= {min}, got '{s}'");
+            if (!list.Contains(v)) list.Add(v);
+        }
+        return list;
+    }
+
+    static string[] Split(string flag, string s)
+    {
+        string[] parts = s.Split(',', StringSplitOptions.TrimEntries);
+        foreach (string p in parts)
+            if (p.Length == 0) throw new UsageException($"{flag}: empty item in '{s}'");
+        return parts;
+    }
+}

@@ -1,0 +1,67 @@
+using System;
+using System.IO;
+
+namespace Fulcrum.Runner;
+
+/// <summary>
+/// The <c>fulcrum</c> command line (DESIGN.md, "The runner"):
+/// <code>
+/// fulcrum                                   the showcase report over Samples~/Scenes
+/// fulcrum run SCENE.json [--seconds S | --steps N] [--dt X] [--solver pgs|tgs]
+///             [--iterations N] [--substeps N] [--threads N] [--trace OUT.csv] [--every K]
+/// fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
+///             (also --seconds S | --steps N, --dt X, --threads N)
+/// fulcrum check SCENE.json
+/// </code>
+/// Flags override the scene file. A bad scene or flag exits non-zero with one line naming
+/// the flag or the field, and nothing is written.
+/// </summary>
+public static class Cli
+{
+    public const int ExitOk = 0;
+    /// <summary>The scene is invalid or cannot be built.</summary>
+    public const int ExitScene = 1;
+    /// <summary>The command line is wrong.</summary>
+    public const int ExitUsage = 2;
+
+    public const string Usage = """
+        usage:
+          fulcrum                          run the showcase scenes in Samples~/Scenes and print a report
+          fulcrum run SCENE.json [--seconds S | --steps N] [--dt X] [--solver pgs|tgs]
+                      [--iterations N] [--substeps N] [--threads N] [--trace OUT.csv] [--every K]
+          fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
+                      [--seconds S | --steps N] [--dt X] [--threads N]
+          fulcrum check SCENE.json         validate only: every error with its JSON path
+        """;
+
+    /// <summary>Runs one command line; returns the exit code. Everything printed goes to the two writers.</summary>
+    public static int Run(string[] args, TextWriter output, TextWriter error)
+    {
+        try
+        {
+            if (args.Length == 0) return ReportCommand.Run(args, output);
+            switch (args[0])
+            {
+                case "run": return RunCommand.Run(new Arguments("run", args, 1, RunCommand.Flags), output);
+                case "check": return CheckCommand.Run(new Arguments("check", args, 1), output, error);
+                case "sweep": return SweepCommand.Run(new Arguments("sweep", args, 1, SweepCommand.Flags), output);
+                case "report": return ReportCommand.Run(args[1..], output);
+                case "help" or "--help" or "-h":
+                    output.WriteLine(Usage);
+                    return ExitOk;
+                default:
+                    throw new UsageException($"unknown command '{args[0]}' (expected run, sweep or check; 'fulcrum help' lists them)");
+            }
+        }
+        catch (UsageException e)
+        {
+            error.WriteLine("fulcrum: error: " + e.Message);
+            return e.ExitCode;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            error.WriteLine("fulcrum: error: " + e.Message);
+            return ExitScene;
+        }
+    }
+}

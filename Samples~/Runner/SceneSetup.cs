@@ -1,0 +1,88 @@
+using System;
+using System.Globalization;
+using System.IO;
+using Fulcrum.Scenes;
+
+namespace Fulcrum.Runner;
+
+/// <summary>Loading a scene file and applying the command line's overrides, with one-line reasons on failure.</summary>
+static class SceneSetup
+{
+    /// <summary>Reads and validates a scene; a problem becomes a <see cref="UsageException"/> naming the file and the field.</summary>
+    public static SceneDocument Load(string path)
+    {
+        if (!File.Exists(path)) throw new UsageException($"{path}: no such scene file", Cli.ExitScene);
+        string text;
+        try
+        {
+            text = File.ReadAllText(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new UsageException($"{path}: cannot read: {e.Message}", Cli.ExitScene);
+        }
+        try
+        {
+            return SceneFile.Parse(text);
+        }
+        catch (SceneException e)
+        {
+            string more = e.Errors.Count > 1 ? $" (and {e.Errors.Count - 1} more: see 'fulcrum check {path}')" : "";
+            throw new UsageException($"{path}: {e.Errors[0]}{more}", Cli.ExitScene);
+        }
+    }
+
+    /// <summary>--dt, --solver, --iterations and --substeps override the scene's values.</summary>
+    public static void ApplySolverFlags(SceneDocument doc, Arguments a)
+    {
+        if (a.PositiveFloat("--dt") is float dt) doc.Timestep = dt;
+        if (a.Solver("--solver") is SolverType solver) doc.Solver.Type = solver;
+        if (a.Int("--iterations", 1) is int iterations) doc.Solver.Iterations = iterations;
+        if (a.Int("--substeps", 1) is int substeps) doc.Solver.Substeps = substeps;
+    }
+
+    /// <summary>Steps from --steps or --seconds (not both), else <paramref name="defaultSeconds"/>.</summary>
+    public static int Steps(Arguments a, float dt, float defaultSeconds)
+    {
+        int? steps = a.Int("--steps", 1);
+        float? seconds = a.PositiveFloat("--seconds");
+        if (steps != null && seconds != null) throw new UsageException("--steps: give --steps or --seconds, not both");
+        if (steps is int n) return n;
+        double count = Math.Ceiling((seconds ?? defaultSeconds) / (double)dt - 1e-6);
+        if (count > int.MaxValue) throw new UsageException($"--seconds: {seconds} s is too many steps of {dt.ToString("R", CultureInfo.InvariantCulture)} s");
+        return Math.Max(1, (int)count);
+    }
+
+    /// <summary>World settings with the --threads flag (the scene sets the rest).</summary>
+    public static WorldSettings Settings(Arguments a)
+    {
+        WorldSettings s = WorldSettings.Default;
+        if (a.Int("--threads", 1) is int threads) s.Threads = threads;
+        return s;
+    }
+
+    /// <summary>Builds the scene; a shape Core cannot build yet becomes a one-line reason naming its path.</summary>
+    public static SceneInstance Build(string path, SceneDocument doc, WorldSettings settings)
+    {
+        try
+        {
+            return SceneBuilder.Build(doc, settings);
+        }
+        catch (NotSupportedException e)
+        {
+            throw new UsageException($"{path}: {e.Message}", Cli.ExitScene);
+        }
+        catch (SceneException e)
+        {
+            throw new UsageException($"{path}: {e.Errors[0]}", Cli.ExitScene);
+        }
+    }
+
+    /// <summary>Lines describing what of the scene is carried as data only.</summary>
+    public static string? JointNote(SceneInstance scene) =>
+        scene.Joints.Count > 0 && scene.JointHandles.Count == 0
+            ? $"{scene.Joints.Count} joint{(scene.Joints.Count == 1 ? "" : "s")} kept as data: the world has no joints yet, so linked bodies move freely"
+            : null;
+
+    public static string F(float f) => f.ToString("R", CultureInfo.InvariantCulture);
+}
