@@ -28,7 +28,7 @@ namespace Fulcrum.Tests.Scenes
         {
             SceneError e = OnlyError(SceneSamples.OneBall(", \"colour\": \"red\""));
             Assert.That(e.Path, Is.EqualTo("$.bodies[0].colour"));
-            Assert.That(e.Message, Does.StartWith("unknown field (expected one of: name, type, shape, mass, material,"));
+            Assert.That(e.Message, Does.StartWith("unknown field (expected one of: name, type, shape, mass, density, material,"));
             Assert.That(e.Line, Is.EqualTo(5));
         }
 
@@ -64,10 +64,27 @@ namespace Fulcrum.Tests.Scenes
         }
 
         [Test]
-        public void Mass_together_with_a_material_density_is_an_error()
+        public void Mass_and_density_on_one_body_is_an_error()
         {
-            SceneError e = OnlyError(SceneSamples.OneBall(", \"mass\": 2, \"material\": \"wood\""));
-            Assert.That(e.ToString(), Does.StartWith("$.bodies[0].mass: mass and the density of material 'wood' are both given: give one"));
+            SceneError e = OnlyError(SceneSamples.OneBall(", \"mass\": 2, \"density\": 300"));
+            Assert.That(e.ToString(), Does.StartWith("$.bodies[0].density: mass and density are both given: give one"));
+        }
+
+        [Test]
+        public void Mass_overrides_the_density_of_the_material()
+        {
+            SceneDocument doc = SceneFile.Parse(SceneSamples.OneBall(", \"mass\": 2, \"material\": \"wood\""));
+            var instance = SceneBuilder.Build(doc);
+            Assert.That(instance.World.GetBody(instance.GetBody("ball")).Mass, Is.EqualTo(2f).Within(1e-5f));
+        }
+
+        [Test]
+        public void A_body_density_overrides_the_material_density()
+        {
+            SceneDocument doc = SceneFile.Parse(SceneSamples.OneBall(", \"density\": 300, \"material\": \"wood\""));
+            var instance = SceneBuilder.Build(doc);
+            float expected = MassProperties.Sphere(0.5f, 300f).Mass;
+            Assert.That(instance.World.GetBody(instance.GetBody("ball")).Mass, Is.EqualTo(expected).Within(1e-3f));
         }
 
         [Test]
@@ -146,7 +163,7 @@ namespace Fulcrum.Tests.Scenes
             """;
             Assert.That(Errors(text).Select(e => e.Path + ": " + e.Message).ToList(), Is.EqualTo(new[]
             {
-                "$.bodies[0].spin: unknown field (expected one of: name, type, shape, mass, material, position, rotation, velocity, angularVelocity, ccd)",
+                "$.bodies[0].spin: unknown field (expected one of: name, type, shape, mass, density, material, position, rotation, velocity, angularVelocity, ccd)",
                 "$.bodies[1].shape.halfHeight: missing required field",
                 "$.timestep: must be > 0, got 0",
                 "$.bodies[0].shape.halfExtents: must be > 0 on every axis, got [1, 0, 1]",

@@ -25,10 +25,11 @@ namespace Fulcrum.Tests.Scenes
         }
 
         [Test]
-        public void The_verbatim_design_example_breaks_the_mass_or_density_rule()
+        public void The_verbatim_design_example_loads_with_the_mass_overriding_the_material_density()
         {
-            var e = Assert.Throws<SceneException>(() => SceneFile.Parse(SceneSamples.DesignExampleVerbatim))!;
-            Assert.That(e.Message, Is.EqualTo("$.bodies[1].mass: mass and the density of material 'wood' are both given: give one (line 10, column 50)"));
+            SceneDocument doc = SceneFile.Parse(SceneSamples.DesignExampleVerbatim);
+            Assert.That(doc.Bodies[1].Mass, Is.EqualTo(1f));
+            Assert.That(SceneDifference.Find(doc, SceneFile.Parse(SceneFile.Save(doc))), Is.Null);
         }
 
         [Test]

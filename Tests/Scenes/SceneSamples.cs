@@ -3,11 +3,7 @@ namespace Fulcrum.Tests.Scenes
     /// <summary>Scene texts shared by the scene tests.</summary>
     static class SceneSamples
     {
-        /// <summary>
-        /// The example of DESIGN.md with one change: the ball's <c>"mass": 1.0,</c> is removed,
-        /// because with it the example breaks DESIGN's own rule (mass and a material density
-        /// both given is an error; <see cref="DesignExampleVerbatim"/> shows the error).
-        /// </summary>
+        /// <summary>The example of DESIGN.md without the ball's mass (its material's density then gives it).</summary>
         public static readonly string DesignExample = DesignExampleVerbatim.Replace("\"mass\": 1.0, ", "");
 
         /// <summary>The example of DESIGN.md, verbatim.</summary>

@@ -97,6 +97,8 @@ namespace Fulcrum.Scenes
                 if (b.Shape == null) Error(P(path, "shape"), "missing required field");
                 else Shape(b.Shape, P(path, "shape"), b.Type == BodyType.Static, child: false);
                 MassAndMaterial(b.Mass, b.Material, b.Type, path);
+                if (b.Density is float density && Positive(density, P(path, "density")) && b.Mass != null)
+                    Error(P(path, "density"), "mass and density are both given: give one");
                 Finite(b.Position, P(path, "position"));
                 Rotation(b.Rotation, P(path, "rotation"));
                 Finite(b.Velocity, P(path, "velocity"));
@@ -111,17 +113,14 @@ namespace Fulcrum.Scenes
 
             void MassAndMaterial(float? mass, string? material, BodyType type, string path)
             {
-                SceneMaterial? m = null;
                 if (material != null)
                 {
-                    m = _doc.FindMaterial(material);
-                    if (m == null) Error(P(path, "material"), $"no material named '{material}' in $.materials");
+                    if (_doc.FindMaterial(material) == null) Error(P(path, "material"), $"no material named '{material}' in $.materials");
                 }
                 if (mass is float kg)
                 {
                     if (type != BodyType.Dynamic) Error(P(path, "mass"), $"a {SceneNames.Of(type)} body has no mass: remove it or make the body dynamic");
-                    else if (Positive(kg, P(path, "mass")) && m?.Density != null)
-                        Error(P(path, "mass"), $"mass and the density of material '{m.Name}' are both given: give one");
+                    else Positive(kg, P(path, "mass"));
                 }
             }
 

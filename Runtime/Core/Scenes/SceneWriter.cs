@@ -46,6 +46,7 @@ namespace Fulcrum.Scenes
         {
             var o = new Obj().Add("name", b.Name).Add("type", SceneNames.Of(b.Type));
             if (b.Mass is float mass) o.Add("mass", mass);
+            if (b.Density is float density) o.Add("density", density);
             if (b.Material != null) o.Add("material", b.Material);
             o.Add("shape", b.Shape != null ? Shape(b.Shape) : JsonValue.Null());
             o.Add("position", b.Position);

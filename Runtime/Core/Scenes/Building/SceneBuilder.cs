@@ -71,6 +71,7 @@ namespace Fulcrum.Scenes
                 template.Restitution = material.Restitution;
                 if (material.Density is float density) template.Density = density;
             }
+            if (body.Density is float own) template.Density = own;
             if (body.Shape is SceneCompound compound)
             {
                 for (int c = 0; c < compound.Children.Count; c++)

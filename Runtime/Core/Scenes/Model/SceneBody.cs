@@ -14,8 +14,18 @@ namespace Fulcrum.Scenes
         /// <summary><c>shape</c>: the collision shape (a compound for several). Required.</summary>
         public SceneShape? Shape { get; set; }
 
-        /// <summary><c>mass</c>, kg, &gt; 0, dynamic bodies only; null: from the density. Not together with a material density.</summary>
+        /// <summary>
+        /// <c>mass</c>, kg, &gt; 0, dynamic bodies only; null: from the density. A mass overrides
+        /// the density of the body's material: the shape's mass distribution is scaled to it.
+        /// </summary>
         public float? Mass { get; set; }
+
+        /// <summary>
+        /// <c>density</c>, kg/m^3, &gt; 0 (an extension of fulcrum-scene/1): this body's own
+        /// density, overriding its material's. Giving both <c>mass</c> and <c>density</c> on one
+        /// body is an error. Null: the material's density (1000 without a material).
+        /// </summary>
+        public float? Density { get; set; }
 
         /// <summary><c>material</c>: the name of an entry of <c>materials</c>; null: friction 0.6, restitution 0, density 1000.</summary>
         public string? Material { get; set; }

@@ -80,6 +80,7 @@ namespace Fulcrum.Scenes
             }
             if (r.Take("shape", required: true) is JsonValue shape) b.Shape = ReadShape(shape, d);
             b.Mass = r.OptionalFloat("mass");
+            b.Density = r.OptionalFloat("density");
             b.Material = r.String("material");
             b.Position = r.Vector("position", b.Position);
             b.Rotation = r.Rotation("rotation", b.Rotation);
