@@ -18,9 +18,9 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>
-        /// One XPBD substep of length <paramref name="h"/>: predict with gravity, project the
-        /// elastic constraints (multipliers start at zero and are kept across the iterations),
-        /// attachments, then contacts; velocities from the change in position.
+        /// One XPBD substep of length <paramref name="h"/>: predict with gravity; per iteration
+        /// project contacts, the elastic constraints (multipliers start at zero and are kept
+        /// across the iterations) and attachments; velocities from the change in position.
         /// </summary>
         internal void Substep(float h, RigidCoupling coupling, ParallelRanges? pool)
         {
@@ -39,6 +39,10 @@ namespace Fulcrum.SoftBodies
             float gamma = DampingTime / h;
             for (int iteration = 0; iteration < Iterations; iteration++)
             {
+                // Contacts before the elastic pass: projected after it, they keep re-straining
+                // the elements that touch the ground, and a stiff body settles with that strain
+                // locked in (a cube at E = 1e9 Pa kept 1.2e4 J; this order leaves 185 J).
+                if (CollideWithShapes) Contacts.Solve(World, this, h, coupling);
                 if (Tets.Length > 0) RunColors(TetJob(h, gamma), TetColors, pool);
                 if (Tris.Length > 0)
                 {
@@ -56,7 +60,6 @@ namespace Fulcrum.SoftBodies
                 }
                 if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
             }
-            if (CollideWithShapes) Contacts.Solve(World, this, h, coupling);
             SelfContacts?.Solve(X, W);
             float invH = 1f / h;
             for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;

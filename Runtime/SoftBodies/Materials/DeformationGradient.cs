@@ -10,6 +10,13 @@ namespace Fulcrum.SoftBodies
     /// </summary>
     internal static class DeformationGradient
     {
+        /// <summary>
+        /// Below this value of C_D^2 (about 1.5 |strain|^2, so a strain under 1e-6) an element
+        /// counts as at rest: float positions cannot resolve such a strain, and the cone point
+        /// of C_D at rest would otherwise turn rounding noise into motion.
+        /// </summary>
+        public const double RestTolerance = 1e-12;
+
         /// <summary>F of a tet from its current vertices and its rest inverse Dm^-1.</summary>
         public static Mat3 Of(Vector3 x0, Vector3 x1, Vector3 x2, Vector3 x3, in Mat3 restInverse) =>
             new Mat3(x1 - x0, x2 - x0, x3 - x0) * restInverse;

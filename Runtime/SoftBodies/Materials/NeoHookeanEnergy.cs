@@ -78,7 +78,7 @@ namespace Fulcrum.SoftBodies
             double l = LogJ(jj);
             float slope = LogJSlope((float)jj);
             double d = Deviatoric(f, l);
-            if (d > 1e-18)
+            if (d > DeformationGradient.RestTolerance)
             {
                 // dD/dF = 2 F - 2 L'(J) cof F; dC_D/dF = dD/dF / (2 C_D).
                 double c = Math.Sqrt(d);

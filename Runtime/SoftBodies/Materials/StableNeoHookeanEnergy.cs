@@ -59,7 +59,7 @@ namespace Fulcrum.SoftBodies
         /// <summary>Psi(F), J/m^3; 0 at rest, finite for every finite F.</summary>
         public float EnergyDensity(in Mat3 f)
         {
-            double j = (double)f.Determinant - 1.0;
+            double j = Determinant(f) - 1.0;
             return (float)(0.5 * Mu * Deviatoric(f, j) + 0.5 * HydrostaticStiffness * j * j);
         }
 
@@ -74,9 +74,9 @@ namespace Fulcrum.SoftBodies
         public void Constraints(in Mat3 f, out float cDev, out Mat3 dDev, out float cVol, out Mat3 dVol)
         {
             Mat3 cof = DeformationGradient.Cofactor(f);
-            double j = (double)Determinant(f) - 1.0;
+            double j = Determinant(f) - 1.0;
             double d = Deviatoric(f, j);
-            if (d > 1e-18)
+            if (d > DeformationGradient.RestTolerance)
             {
                 // dD/dF = 2 I_C/(I_C + 1) F + (2 beta j - 3/2) cof F, and dC_D/dF = dD/dF / (2 C_D).
                 double c = Math.Sqrt(d);
