@@ -32,6 +32,48 @@ namespace Fulcrum.Tests.SoftBodies
             }
         }
 
+        [TestCase(0)]
+        [TestCase(1)]
+        [TestCase(2)]
+        [TestCase(3)]
+        [TestCase(4)]
+        [TestCase(5)]
+        public void Alloc(int variant)
+        {
+            var world = new World();
+            BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Zero));
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(Vector3.UnitY, 0)));
+            BodyHandle box = world.CreateBody(BodyDef.Dynamic(new Vector3(0, 0.55f, 0)));
+            world.AddShape(box, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.1f))));
+            SoftBodyDef jelly = SoftBodyScenes.Cube(0.4f, 4, MaterialPresets.Jelly, new Vector3(0, 0.21f, 0));
+            if (variant == 1) jelly.SelfCollision = true;
+            if (variant == 2) jelly.Plasticity = SoftPlasticity.Flow(0.05f, 1f);
+            if (variant == 3) jelly.Pins = new[] { SoftPin.ToBody(new Vector3(-1, 0.2f, -1), new Vector3(1, 0.2f, 1), box) };
+            if (variant == 4) jelly = SoftBodyDef.Of(SoftMesh.Cloth(1f, 1f, 10, 10), MaterialPresets.Cloth, new Vector3(2, 0.7f, 0));
+            if (variant == 5)
+            {
+                BodyHandle ball = world.CreateBody(BodyDef.Static(new Vector3(2, 0.3f, 0)));
+                world.AddShape(ball, ShapeDef.Of(ShapeGeometry.Sphere(0.3f)));
+                jelly.SelfCollision = true;
+                jelly.Plasticity = SoftPlasticity.Flow(0.05f, 1f);
+                jelly.Pins = new[] { SoftPin.ToBody(new Vector3(-1, 0.2f, -1), new Vector3(1, 0.2f, 1), box) };
+                world.CreateSoftBody(SoftBodyDef.Of(SoftMesh.Cloth(1f, 1f, 10, 10), MaterialPresets.Cloth, new Vector3(2, 0.7f, 0)));
+            }
+            world.CreateSoftBody(jelly);
+            for (int k = 0; k < 12; k++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                for (int i = 0; i < 10; i++)
+                {
+                    long b0 = GC.GetAllocatedBytesForCurrentThread();
+                    world.Step(SoftBodyScenes.Dt);
+                    long d = GC.GetAllocatedBytesForCurrentThread() - b0;
+                    if (d > 0 && k > 0) TestContext.Out.WriteLine($"  step {k * 10 + i}: {d} bytes");
+                }
+                TestContext.Out.WriteLine($"variant {variant}: {GC.GetAllocatedBytesForCurrentThread() - before} bytes");
+            }
+        }
+
         [TestCase(0f)]
         [TestCase(1f)]
         public void Rest_drift(float offset)
