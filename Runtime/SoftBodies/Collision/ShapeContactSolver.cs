@@ -6,8 +6,8 @@ namespace Fulcrum.SoftBodies
 {
     /// <summary>
     /// Vertex-versus-rigid-shape contacts of one soft body. Once per step the shapes whose
-    /// bounds (swept over the step) come near the body's are gathered; each substep every free
-    /// vertex is pushed out of each of them to <see cref="SoftBody.CollisionRadius"/> as a
+    /// bounds (swept over the step) come near the body's are gathered; each iteration of each
+    /// substep (before the elastic pass) every free vertex is pushed out of each of them to <see cref="SoftBody.CollisionRadius"/> as a
     /// zero-compliance XPBD constraint shared with the shape's body through its generalised
     /// inverse mass, then Coulomb friction removes the relative tangential displacement of the
     /// substep up to mu times the normal correction (Mueller et al. 2020, "Detailed Rigid Body
