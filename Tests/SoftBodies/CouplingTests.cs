@@ -109,6 +109,40 @@ namespace Fulcrum.Tests.SoftBodies
         }
 
         [Test]
+        public void Self_collision_keeps_surface_vertices_apart()
+        {
+            // Two separate tets in one mesh, thrown at each other in zero gravity.
+            var v = new[]
+            {
+                new Vector3(-0.3f, 0, 0), new Vector3(-0.2f, 0, 0), new Vector3(-0.3f, 0.1f, 0), new Vector3(-0.3f, 0, 0.1f),
+                new Vector3(0.3f, 0, 0), new Vector3(0.3f, 0.1f, 0), new Vector3(0.2f, 0, 0), new Vector3(0.3f, 0, 0.1f),
+            };
+            SoftMesh mesh = SoftMesh.FromTetrahedra(v, new[] { 0, 1, 2, 3, 4, 5, 6, 7 });
+            float Closest(bool self)
+            {
+                World world = SoftBodyScenes.ZeroGravityWorld();
+                var def = SoftBodyDef.Of(mesh, new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e5f, 0.3f, 1000f), Vector3.Zero);
+                def.SelfCollision = self;
+                def.CollisionRadius = 0.02f;
+                SoftBody body = world.GetSoftBody(world.CreateSoftBody(def));
+                for (int i = 0; i < 4; i++) body.SetVertexVelocity(i, new Vector3(1f, 0, 0));
+                for (int i = 4; i < 8; i++) body.SetVertexVelocity(i, new Vector3(-1f, 0, 0));
+                float closest = float.MaxValue;
+                for (int step = 0; step < 30; step++)
+                {
+                    world.Step(SoftBodyScenes.Dt);
+                    for (int i = 0; i < 4; i++)
+                        for (int j = 4; j < 8; j++) closest = MathF.Min(closest, (body.Positions[i] - body.Positions[j]).Length());
+                }
+                return closest;
+            }
+            float with = Closest(true), without = Closest(false);
+            TestContext.Out.WriteLine($"closest approach: with self-collision {with:F4} m, without {without:F4} m");
+            Assert.That(with, Is.GreaterThan(2 * 0.02f - 1e-3f));
+            Assert.That(without, Is.LessThan(0.02f), "they would meet");
+        }
+
+        [Test]
         public void Vertices_collide_with_boxes_and_capsules_too()
         {
             var world = new World();

@@ -64,6 +64,7 @@ namespace Fulcrum.Tests.SoftBodies
             Surface(ball, out float area, out float enclosed);
             TestContext.Out.WriteLine($"sphere: {ball.TetrahedronCount} tets, volume {Volume(ball):F4} vs {exact:F4}, area {area:F4} vs {MathF.PI:F4}");
             Assert.That(Volume(ball), Is.EqualTo(exact).Within(0.05f * exact));
+            Assert.That(area, Is.LessThan(1.3f * MathF.PI), "surface vertices are snapped onto the sphere");
             Assert.That(enclosed, Is.EqualTo(Volume(ball)).Within(1e-3f));
             Assert.That(ball.Bounds.Max.X, Is.EqualTo(0.5f).Within(0.01f));
         }

@@ -114,7 +114,7 @@ namespace Fulcrum.SoftBodies
                 vertices[v] = project(old);
                 foreach (int t in incident[v]!)
                 {
-                    if (SignedVolume(vertices, tets, t) < 0.25f * restVolume[t / 4])
+                    if (SignedVolume(vertices, tets, t) < 0.1f * restVolume[t / 4])
                     {
                         vertices[v] = old;
                         break;
