@@ -3,13 +3,6 @@ using System.Threading;
 
 namespace Fulcrum.SoftBodies
 {
-    /// <summary>Work over an index range, run in chunks by <see cref="ParallelRanges"/>.</summary>
-    internal abstract class RangeJob
-    {
-        /// <summary>Processes indices [start, end).</summary>
-        public abstract void Execute(int start, int end);
-    }
-
     /// <summary>
     /// A small pool of persistent worker threads that split an index range into chunks; the
     /// calling thread works too and returns when every chunk is done. Used for one colour of
