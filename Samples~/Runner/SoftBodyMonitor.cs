@@ -1,5 +1,6 @@
 using System.Numerics;
 using Fulcrum.Scenes;
+using Fulcrum.SoftBodies;
 
 namespace Fulcrum.Runner;
 
@@ -24,19 +25,42 @@ public interface ISoftBodyMonitor
 }
 
 /// <summary>
-/// The seam where the soft-body assembly joins the runner. Until Fulcrum.SoftBodies can build
-/// a <see cref="SceneSoftBody"/>, scenes with soft bodies run their rigid part only and say so.
-/// To wire it: reference Fulcrum.SoftBodies from the runner, create the soft bodies in
-/// <see cref="Attach"/> and return a monitor over them; traces and summaries pick it up.
+/// Where the soft-body assembly joins the runner: creates a scene's soft bodies with
+/// <see cref="SceneSoftBodyBuilder"/> and samples them for traces, summaries and sweeps.
 /// </summary>
 public static class SoftBodySupport
 {
-    /// <summary>Creates the scene's soft bodies; null (and a note) when there are none or they cannot be built yet.</summary>
+    /// <summary>Creates the scene's soft bodies and returns a monitor over them; null when there are none.</summary>
     public static ISoftBodyMonitor? Attach(SceneInstance scene, out string? note)
     {
         note = null;
         if (scene.SoftBodies.Count == 0) return null;
-        note = $"{scene.SoftBodies.Count} soft bod{(scene.SoftBodies.Count == 1 ? "y" : "ies")} skipped: soft bodies are not wired into the runner yet";
-        return null;
+        return new Monitor(scene.World, SceneSoftBodyBuilder.Build(scene));
+    }
+
+    sealed class Monitor : ISoftBodyMonitor
+    {
+        readonly World _world;
+        readonly SoftBodyHandle[] _handles;
+
+        public Monitor(World world, SoftBodyHandle[] handles)
+        {
+            _world = world;
+            _handles = handles;
+        }
+
+        public int Count => _handles.Length;
+
+        public string Name(int index) => _world.GetSoftBody(_handles[index]).Name ?? $"soft{index}";
+
+        // energy: elastic (strain) plus kinetic energy of the soft body, J.
+        public SoftBodySample Sample(int index)
+        {
+            SoftBody body = _world.GetSoftBody(_handles[index]);
+            SoftBodyStats stats = body.ComputeStats();
+            var probes = new Vector3[body.ProbeCount];
+            for (int p = 0; p < probes.Length; p++) probes[p] = body.GetProbe(p);
+            return new SoftBodySample(stats.Centroid, stats.VolumeRatio, stats.MinJ, stats.StrainEnergy + stats.KineticEnergy, probes);
+        }
     }
 }
