@@ -25,6 +25,11 @@ namespace Fulcrum.Collision
             Register(ShapeType.Sphere, ShapeType.Plane, PlaneCollider.Collide);
             Register(ShapeType.Box, ShapeType.Plane, PlaneCollider.Collide);
             Register(ShapeType.Capsule, ShapeType.Plane, PlaneCollider.Collide);
+            Register(ShapeType.ConvexHull, ShapeType.Plane, PlaneCollider.Collide);
+            Register(ShapeType.Sphere, ShapeType.ConvexHull, ConvexCollider.Collide);
+            Register(ShapeType.Box, ShapeType.ConvexHull, ConvexCollider.Collide);
+            Register(ShapeType.Capsule, ShapeType.ConvexHull, ConvexCollider.Collide);
+            Register(ShapeType.ConvexHull, ShapeType.ConvexHull, ConvexCollider.Collide);
         }
 
         static void Register(ShapeType a, ShapeType b, PairFunction f)

@@ -66,6 +66,14 @@ namespace Fulcrum.Collision
             PatchStart[PatchCount] = PointCount;
         }
 
+        /// <summary>Drops every point and patch added after the counts given.</summary>
+        public void Truncate(int pointCount, int patchCount)
+        {
+            PointCount = pointCount;
+            PatchCount = patchCount;
+            PatchStart[patchCount] = pointCount;
+        }
+
         /// <summary>Points in patch <paramref name="p"/>.</summary>
         public int PatchPointCount(int p) => PatchStart[p + 1] - PatchStart[p];
 
