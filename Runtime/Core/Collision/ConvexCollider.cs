@@ -48,7 +48,17 @@ namespace Fulcrum.Collision
                 coreSeparation = 0;
             }
             if (coreSeparation - rA - rB > output.Speculative) return;
+            Manifold(a, b, n, coreSeparation, pa, output);
+        }
 
+        /// <summary>
+        /// The manifold of two cores given the normal from A to B, the core separation along it
+        /// and the closest point on A's core: face clipping when a face faces the normal,
+        /// else the single pair of closest points.
+        /// </summary>
+        public static void Manifold(in SupportShape a, in SupportShape b, Vector3 n, float coreSeparation, Vector3 pa, ContactBuffer output)
+        {
+            float rA = a.Radius, rB = b.Radius;
             Span<Vector3> fa = stackalloc Vector3[MaxFaceVertices];
             Span<Vector3> fb = stackalloc Vector3[MaxFaceVertices];
             int ca = a.SupportFace(n, fa, out Vector3 na, out int ida);
@@ -71,7 +81,6 @@ namespace Fulcrum.Collision
                 if (clippedMin <= sep + ClipTolerance) return;
                 output.Truncate(pointsBefore, patchesBefore);
             }
-
             output.BeginPatch(n);
             output.Add(pa + n * (rA + 0.5f * sep), sep, 0x7FFF0000u);
         }
