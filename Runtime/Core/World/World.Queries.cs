@@ -197,7 +197,10 @@ namespace Fulcrum
                 Aabb tight = s.Geometry[i].ComputeAabb(ShapeWorldPose(i));
                 s.WorldAabb[i] = tight;
                 if (!BroadPhase.FatAabb(s.ProxyId[i]).Contains(tight))
+                {
                     BroadPhase.MoveProxy(s.ProxyId[i], tight.Expanded(CollisionMargins.AabbMargin));
+                    _fatBoxStep[i] = _stepIndex;
+                }
             }
         }
     }
