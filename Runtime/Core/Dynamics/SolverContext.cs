@@ -336,6 +336,20 @@ namespace Fulcrum.Dynamics
             }
         }
 
+        /// <summary>Copies the dynamic bodies' velocities into the solver bodies (after the integrator turned them, PGS).</summary>
+        public void LoadVelocities()
+        {
+            BodyStorage s = _storage;
+            for (int k = 1; k < BodyCount; k++)
+            {
+                ref SolverBody body = ref Bodies[k];
+                if (body.IsDynamic == 0) continue;
+                int i = BodySlot[k];
+                body.LinearVelocity = s.LinearVelocity[i];
+                body.AngularVelocity = s.AngularVelocity[i];
+            }
+        }
+
         /// <summary>Sets each solver body's deltas from where the integrator moved its body (PGS, before the position passes).</summary>
         public void LoadDeltas()
         {
