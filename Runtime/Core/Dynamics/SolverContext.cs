@@ -50,6 +50,17 @@ namespace Fulcrum.Dynamics
         float _previousDt;
         Softness _contactSoftness, _fixedSoftness;
         JointSolver.StepParameters _jointParameters;
+        readonly ColorJob _colorJob;
+        readonly BodyJob _bodyJob;
+
+        /// <summary>Threads for the colour batches; null runs everything on the caller's thread.</summary>
+        public WorkerPool? Pool;
+
+        public SolverContext()
+        {
+            _colorJob = new ColorJob(this);
+            _bodyJob = new BodyJob(this);
+        }
 
         /// <summary>The (sub)step of the current solve, s.</summary>
         public float SubstepDt => _h;
@@ -249,77 +260,123 @@ namespace Fulcrum.Dynamics
         /// <summary>v += h (g + F/m), w += h I^-1 tau for the dynamic solver bodies (TGS substeps).</summary>
         public void IntegrateVelocities()
         {
-            BodyStorage s = _storage;
-            Vector3 g = _settings.Gravity;
-            float maxSpeed = _settings.MaxLinearSpeed;
-            for (int k = 1; k < BodyCount; k++)
-            {
-                ref SolverBody body = ref Bodies[k];
-                if (body.IsDynamic == 0) continue;
-                Integrator.IntegrateVelocity(s, BodySlot[k], g, _h, maxSpeed, ref body.LinearVelocity, ref body.AngularVelocity);
-            }
+            _bodyJob.Positions = false;
+            if (Pool != null) Pool.For(_bodyJob, 1, BodyCount, 4 * MinChunk);
+            else _bodyJob.Execute(1, BodyCount);
         }
 
         /// <summary>dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps).</summary>
         public void IntegratePositions()
         {
-            float h = _h;
-            for (int k = 1; k < BodyCount; k++)
+            _bodyJob.Positions = true;
+            if (Pool != null) Pool.For(_bodyJob, 1, BodyCount, 4 * MinChunk);
+            else _bodyJob.Execute(1, BodyCount);
+        }
+
+        /// <summary>Velocity or position integration of the solver bodies [start, end).</summary>
+        sealed class BodyJob : IRangeJob
+        {
+            readonly SolverContext _c;
+            public bool Positions;
+
+            public BodyJob(SolverContext context) => _c = context;
+
+            public void Execute(int start, int end)
             {
-                ref SolverBody body = ref Bodies[k];
-                body.DeltaPosition += h * body.LinearVelocity;
-                if (body.AngularVelocity != Vector3.Zero)
-                    body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
+                SolverContext c = _c;
+                SolverBody[] bodies = c.Bodies;
+                if (Positions)
+                {
+                    float h = c._h;
+                    for (int k = start; k < end; k++)
+                    {
+                        ref SolverBody body = ref bodies[k];
+                        body.DeltaPosition += h * body.LinearVelocity;
+                        if (body.AngularVelocity != Vector3.Zero)
+                            body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
+                    }
+                    return;
+                }
+                BodyStorage s = c._storage;
+                Vector3 g = c._settings.Gravity;
+                float maxSpeed = c._settings.MaxLinearSpeed;
+                for (int k = start; k < end; k++)
+                {
+                    ref SolverBody body = ref bodies[k];
+                    if (body.IsDynamic == 0) continue;
+                    Integrator.IntegrateVelocity(s, c.BodySlot[k], g, c._h, maxSpeed, ref body.LinearVelocity, ref body.AngularVelocity);
+                }
             }
         }
 
         /// <summary>Applies the accumulated impulses of every constraint.</summary>
-        public void WarmStart()
-        {
-            for (int c = 0; c < Buckets; c++)
-            {
-                for (int k = _contactStart[c], end = _contactStart[c + 1]; k < end; k++)
-                    ContactSolver.WarmStart(ref Contacts[k], Points, Bodies);
-                for (int k = _jointStart[c], end = _jointStart[c + 1]; k < end; k++)
-                    RunJoint(ref _joints.Data[JointOrder[k]], JointSolver.Pass.WarmStart);
-            }
-        }
+        public void WarmStart() => RunColors(ColorPass.WarmStart);
 
         /// <summary>One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out) or not (relax).</summary>
-        public void Solve(bool useBias)
-        {
-            float invH = _invH, maxPush = _settings.MaxContactPushSpeed;
-            JointSolver.Pass pass = useBias ? JointSolver.Pass.Solve : JointSolver.Pass.Relax;
-            for (int c = 0; c < Buckets; c++)
-            {
-                for (int k = _contactStart[c], end = _contactStart[c + 1]; k < end; k++)
-                    ContactSolver.Solve(ref Contacts[k], Points, Bodies, invH, maxPush, useBias);
-                for (int k = _jointStart[c], end = _jointStart[c + 1]; k < end; k++)
-                    RunJoint(ref _joints.Data[JointOrder[k]], pass);
-            }
-        }
+        public void Solve(bool useBias) => RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
 
         /// <summary>The restitution pass over every contact.</summary>
-        public void ApplyRestitution()
-        {
-            float threshold = _settings.RestitutionThreshold;
-            for (int k = 0; k < ContactCount; k++)
-                ContactSolver.ApplyRestitution(ref Contacts[k], Points, Bodies, threshold);
-        }
+        public void ApplyRestitution() => RunColors(ColorPass.Restitution);
 
-        /// <summary>One non-linear Gauss-Seidel position pass (PGS); returns the deepest contact overlap seen.</summary>
-        public float SolvePositions()
+        /// <summary>One non-linear Gauss-Seidel position pass (PGS).</summary>
+        public void SolvePositions() => RunColors(ColorPass.Position);
+
+        // Colour by colour: the constraints of one colour touch disjoint dynamic bodies, so with
+        // a worker pool they are split between threads; the overflow batch runs on the caller.
+        void RunColors(ColorPass pass)
         {
-            float slop = _settings.LinearSlop, maxCorrection = _settings.MaxContactPushSpeed * _dt;
-            float deepest = 0;
+            ColorJob job = _colorJob;
+            job.Pass = pass;
             for (int c = 0; c < Buckets; c++)
             {
-                for (int k = _contactStart[c], end = _contactStart[c + 1]; k < end; k++)
-                    deepest = MathF.Max(deepest, ContactPositionSolver.Solve(ref Contacts[k], Points, Bodies, slop, maxCorrection));
-                for (int k = _jointStart[c], end = _jointStart[c + 1]; k < end; k++)
-                    RunJoint(ref _joints.Data[JointOrder[k]], JointSolver.Pass.Position);
+                job.ContactStart = _contactStart[c];
+                job.ContactCount = _contactStart[c + 1] - _contactStart[c];
+                job.JointStart = _jointStart[c];
+                int count = job.ContactCount + (_jointStart[c + 1] - _jointStart[c]);
+                if (count == 0) continue;
+                if (Pool != null && c < ConstraintColoring.MaxColors) Pool.For(job, 0, count, MinChunk);
+                else job.Execute(0, count);
             }
-            return deepest;
+        }
+
+        /// <summary>Constraints (or bodies) a thread takes at a time: below this, splitting costs more than it saves.</summary>
+        const int MinChunk = 32;
+
+        enum ColorPass : byte { WarmStart, Solve, Relax, Restitution, Position }
+
+        /// <summary>One pass over the items [start, end) of a colour: its contacts, then its joints.</summary>
+        sealed class ColorJob : IRangeJob
+        {
+            readonly SolverContext _c;
+            public ColorPass Pass;
+            public int ContactStart, ContactCount, JointStart;
+
+            public ColorJob(SolverContext context) => _c = context;
+
+            public void Execute(int start, int end)
+            {
+                SolverContext c = _c;
+                int contactEnd = Math.Min(end, ContactCount);
+                for (int i = start; i < contactEnd; i++)
+                {
+                    ref ContactConstraint k = ref c.Contacts[ContactStart + i];
+                    switch (Pass)
+                    {
+                        case ColorPass.WarmStart: ContactSolver.WarmStart(ref k, c.Points, c.Bodies); break;
+                        case ColorPass.Solve: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, true); break;
+                        case ColorPass.Relax: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, false); break;
+                        case ColorPass.Restitution: ContactSolver.ApplyRestitution(ref k, c.Points, c.Bodies, c._settings.RestitutionThreshold); break;
+                        default: ContactPositionSolver.Solve(ref k, c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt); break;
+                    }
+                }
+                if (Pass == ColorPass.Restitution) return;
+                JointSolver.Pass jointPass = Pass == ColorPass.WarmStart ? JointSolver.Pass.WarmStart
+                    : Pass == ColorPass.Solve ? JointSolver.Pass.Solve
+                    : Pass == ColorPass.Relax ? JointSolver.Pass.Relax
+                    : JointSolver.Pass.Position;
+                for (int i = Math.Max(start, ContactCount); i < end; i++)
+                    c.RunJoint(ref c._joints.Data[c.JointOrder[JointStart + i - ContactCount]], jointPass);
+            }
         }
 
         /// <summary>Copies the solver bodies' velocities back to the dynamic bodies.</summary>

@@ -11,6 +11,23 @@ namespace Fulcrum
         readonly PgsSolver _pgs = new PgsSolver();
         readonly TgsSolver _tgs = new TgsSolver();
         int[] _freeBodies = Array.Empty<int>();
+        WorkerPool? _workers;
+
+        internal WorkerPool? SolverPoolForTests => _workers;
+
+        // The solver's threads follow Settings.Threads; a change of count replaces the pool
+        // (outside the steady state, so the allocation does not recur).
+        WorkerPool? SolverThreads()
+        {
+            int threads = _settings.Threads;
+            if (threads <= 1) return null;
+            if (_workers == null || _workers.ThreadCount != threads)
+            {
+                _workers?.Stop();
+                _workers = new WorkerPool(threads - 1);
+            }
+            return _workers;
+        }
 
         /// <summary>The manifolds of this step as the narrow phase left them (the contact set).</summary>
         ContactManifold[] StepManifolds(out int count)
@@ -36,6 +53,7 @@ namespace Fulcrum
             bool constrained = _islands.ManifoldCount > 0 || _islands.JointCount > 0;
             if (constrained)
             {
+                _solverContext.Pool = SolverThreads();
                 ContactManifold[] manifolds = StepManifolds(out _);
                 _solverContext.Begin(Bodies, Joints, manifolds, _islands, _settings, dt, solver.SubstepCount(_settings));
             }
