@@ -161,5 +161,23 @@ namespace Fulcrum.Tests.Solver
                 Assert.That(w.GetBody(box).LinearVelocity.Length(), Is.LessThan(1e-4f));
             }
         }
-    }
+    
+        [TestCase(SolverType.Tgs)]
+        [TestCase(SolverType.Pgs)]
+        public void Kinematic_platform_lifts_and_carries_a_box(SolverType solver)
+        {
+            var w = new World(Settings(solver));
+            BodyHandle platform = w.CreateBody(BodyDef.Kinematic(new Vector3(0, -0.1f, 0)));
+            w.AddShape(platform, ShapeDef.Of(ShapeGeometry.Box(new Vector3(2, 0.1f, 2))));
+            BodyHandle box = Box(w, new Vector3(0, 0.25f, 0), new Vector3(0.25f), 1f);
+            for (int n = 0; n < 30; n++) w.Step(Dt);
+            w.GetBody(platform).LinearVelocity = new Vector3(0.5f, 1f, 0);
+            for (int n = 0; n < 60; n++) w.Step(Dt);
+            BodyRef b = w.GetBody(box);
+            // One second at (0.5, 1) m/s: the box rides along, on top of the platform.
+            Assert.That(b.Position.Y, Is.EqualTo(1.25f).Within(0.01f));
+            Assert.That(b.Position.X, Is.EqualTo(0.5f).Within(0.01f));
+            Assert.That(b.LinearVelocity.Y, Is.EqualTo(1f).Within(0.01f));
+        }
+}
 }

@@ -347,5 +347,20 @@ namespace Fulcrum.Tests.Solver
             Assert.That(w.GetJointForce(j).Y, Is.EqualTo(5f * G).Within(0.5f));
             Assert.That(w.GetJointTorque(j).Z, Is.EqualTo(5f * G * 1f).Within(1f));
         }
-    }
+    
+        [TestCase(SolverType.Tgs)]
+        [TestCase(SolverType.Pgs)]
+        public void Prismatic_motor_drives_a_slider_at_its_speed(SolverType solver)
+        {
+            var w = new World(Settings(solver));
+            BodyHandle body = Box(w, Vector3.Zero, new Vector3(0.2f), 2f);
+            JointDef d = JointDef.Prismatic(BodyHandle.None, body, Vector3.Zero, Vector3.Zero, Vector3.UnitY);
+            d.MotorSpeed = 0.5f;
+            d.MaxMotorForce = 100f; // beats the 19.6 N weight
+            w.CreateJoint(d);
+            for (int n = 0; n < 60; n++) w.Step(Dt);
+            Assert.That(w.GetBody(body).LinearVelocity.Y, Is.EqualTo(0.5f).Within(0.005f));
+            Assert.That(w.GetBody(body).Position.Y, Is.EqualTo(0.5f).Within(0.03f));
+        }
+}
 }
