@@ -1,0 +1,124 @@
+using System;
+using System.Threading;
+
+namespace Fulcrum.Dynamics
+{
+    /// <summary>
+    /// A fixed set of background threads that run one <see cref="IRangeJob"/> at a time with
+    /// the caller, splitting its range into chunks taken in order from a shared counter.
+    /// <see cref="For"/> returns when every chunk is done, so a sequence of calls acts as a
+    /// sequence of barriers (one per colour batch). Nothing is allocated per call: the job is
+    /// an object the caller keeps, and the workers spin briefly, then sleep on an event.
+    /// The result never depends on which thread ran which chunk as long as the chunks of one
+    /// call write disjoint data, which colouring guarantees for the solver.
+    /// </summary>
+    internal sealed class WorkerPool
+    {
+        readonly Thread[] _threads;
+        readonly ManualResetEventSlim _wake = new ManualResetEventSlim(false);
+        IRangeJob? _job;
+        int _start, _end, _chunk, _chunkCount;
+        // Generation (high 32 bits) and next chunk (low 32): a thread still busy with an older
+        // call sees the generation change and can never take a chunk of the new one.
+        long _ticket;
+        int _remaining;
+        int _generation;
+        volatile bool _stopped;
+
+        /// <summary>Starts <paramref name="workers"/> background threads (the caller is one more).</summary>
+        public WorkerPool(int workers)
+        {
+            _threads = new Thread[workers];
+            for (int i = 0; i < workers; i++)
+            {
+                _threads[i] = new Thread(WorkerLoop) { IsBackground = true, Name = "Fulcrum solver " + (i + 1) };
+                _threads[i].Start();
+            }
+        }
+
+        /// <summary>Lets the worker threads end (after any call in progress).</summary>
+        public void Stop()
+        {
+            _stopped = true;
+            _wake.Set();
+        }
+
+        /// <summary>Calls that were split between threads (for tests and profiling).</summary>
+        public long SplitCalls;
+
+        /// <summary>Threads that take part in a call, the caller included.</summary>
+        public int ThreadCount => _threads.Length + 1;
+
+        /// <summary>
+        /// Runs <paramref name="job"/> over [<paramref name="start"/>, <paramref name="end"/>) in
+        /// chunks of at least <paramref name="minChunk"/> items; small ranges run on the caller.
+        /// </summary>
+        public void For(IRangeJob job, int start, int end, int minChunk)
+        {
+            int count = end - start;
+            if (count <= 0) return;
+            int chunk = Math.Max(minChunk, (count + 4 * ThreadCount - 1) / (4 * ThreadCount));
+            int chunks = (count + chunk - 1) / chunk;
+            if (chunks <= 1 || _threads.Length == 0)
+            {
+                job.Execute(start, end);
+                return;
+            }
+            SplitCalls++;
+            _job = job;
+            _start = start;
+            _end = end;
+            _chunk = chunk;
+            _chunkCount = chunks;
+            Volatile.Write(ref _remaining, chunks);
+            int generation = Interlocked.Increment(ref _generation);
+            Interlocked.Exchange(ref _ticket, (long)generation << 32);
+            _wake.Set();
+            RunChunks(generation);
+            int spins = 0;
+            while (Volatile.Read(ref _remaining) > 0) Pause(ref spins);
+            _wake.Reset();
+            _job = null;
+        }
+
+        void RunChunks(int generation)
+        {
+            while (true)
+            {
+                long ticket = Volatile.Read(ref _ticket);
+                if ((int)(ticket >> 32) != generation) return;
+                int c = (int)(ticket & 0xFFFFFFFF);
+                if (c >= _chunkCount) return;
+                if (Interlocked.CompareExchange(ref _ticket, ticket + 1, ticket) != ticket) continue;
+                IRangeJob job = _job!;
+                int s = _start + c * _chunk;
+                job.Execute(s, Math.Min(_end, s + _chunk));
+                Interlocked.Decrement(ref _remaining);
+            }
+        }
+
+        // Busy-waits for a short while (a colour batch is microseconds), then yields the core.
+        static void Pause(ref int spins)
+        {
+            if (++spins < 100) Thread.SpinWait(20);
+            else Thread.Yield();
+        }
+
+        void WorkerLoop()
+        {
+            int seen = 0;
+            while (true)
+            {
+                int spins = 0;
+                while (Volatile.Read(ref _generation) == seen)
+                {
+                    if (_stopped) return;
+                    if (spins > 2000) _wake.Wait();
+                    Pause(ref spins);
+                }
+                seen = Volatile.Read(ref _generation);
+                RunChunks(seen);
+            }
+        }
+    }
+}
