@@ -60,7 +60,7 @@ namespace Fulcrum.Components
             get => _center;
             set
             {
-                Validate.Finite(value, $"{this}: center");
+                FieldCheck.Finite(value, this, "center");
                 ThrowIfStepping(nameof(center));
                 _center = value;
                 Rebuild();

@@ -62,7 +62,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).LinearVelocity : _linearVelocity;
             set
             {
-                Validate.Finite(value, $"{this}: linearVelocity");
+                FieldCheck.Finite(value, this, "linearVelocity");
                 ThrowIfStepping(nameof(linearVelocity));
                 _linearVelocity = value;
                 if (HasBody) World.GetBody(_body).LinearVelocity = value;
@@ -75,7 +75,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).AngularVelocity : _angularVelocity;
             set
             {
-                Validate.Finite(value, $"{this}: angularVelocity");
+                FieldCheck.Finite(value, this, "angularVelocity");
                 ThrowIfStepping(nameof(angularVelocity));
                 _angularVelocity = value;
                 if (HasBody) World.GetBody(_body).AngularVelocity = value;
@@ -199,7 +199,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).LocalCenterOfMass : _centerOfMass ?? Vector3.Zero;
             set
             {
-                Validate.Finite(value, $"{this}: centerOfMass");
+                FieldCheck.Finite(value, this, "centerOfMass");
                 ThrowIfStepping(nameof(centerOfMass));
                 _centerOfMass = value;
                 if (HasBody) ApplyMass();
@@ -229,7 +229,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).Position : transform.position;
             set
             {
-                Validate.Finite(value, $"{this}: position");
+                FieldCheck.Finite(value, this, "position");
                 ThrowIfStepping(nameof(position));
                 if (!HasBody) { transform.position = value; return; }
                 World.GetBody(_body).Position = value;
@@ -243,7 +243,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).Rotation : transform.rotation;
             set
             {
-                Quaternion q = Validate.Rotation(value, $"{this}: rotation");
+                Quaternion q = FieldCheck.Rotation(value, this, "rotation");
                 ThrowIfStepping(nameof(rotation));
                 if (!HasBody) { transform.rotation = q; return; }
                 World.GetBody(_body).Rotation = q;
@@ -259,7 +259,7 @@ namespace Fulcrum.Components
         /// </summary>
         public void AddForce(Vector3 force, ForceMode mode = ForceMode.Force)
         {
-            Validate.Finite(force, $"{this}: AddForce force");
+            FieldCheck.Finite(force, this, "force");
             ThrowIfStepping(nameof(AddForce));
             if (HasBody) World.AddForce(_body, force, mode);
         }
@@ -270,14 +270,14 @@ namespace Fulcrum.Components
         /// <summary>Like <see cref="AddForce(Vector3, ForceMode)"/>, with the force in the body's axes.</summary>
         public void AddRelativeForce(Vector3 force, ForceMode mode = ForceMode.Force)
         {
-            Validate.Finite(force, $"{this}: AddRelativeForce force");
+            FieldCheck.Finite(force, this, "force");
             AddForce(Vector3.Transform(force, rotation), mode);
         }
 
         /// <summary>Applies a torque in world axes (N m, or rad/s^2, N m s, rad/s by mode).</summary>
         public void AddTorque(Vector3 torque, ForceMode mode = ForceMode.Force)
         {
-            Validate.Finite(torque, $"{this}: AddTorque torque");
+            FieldCheck.Finite(torque, this, "torque");
             ThrowIfStepping(nameof(AddTorque));
             if (HasBody) World.AddTorque(_body, torque, mode);
         }
@@ -285,15 +285,15 @@ namespace Fulcrum.Components
         /// <summary>Like <see cref="AddTorque"/>, with the torque in the body's axes.</summary>
         public void AddRelativeTorque(Vector3 torque, ForceMode mode = ForceMode.Force)
         {
-            Validate.Finite(torque, $"{this}: AddRelativeTorque torque");
+            FieldCheck.Finite(torque, this, "torque");
             AddTorque(Vector3.Transform(torque, rotation), mode);
         }
 
         /// <summary>Applies a force at a world point: the force at the centre plus the torque (p - c) x F.</summary>
         public void AddForceAtPosition(Vector3 force, Vector3 position, ForceMode mode = ForceMode.Force)
         {
-            Validate.Finite(force, $"{this}: AddForceAtPosition force");
-            Validate.Finite(position, $"{this}: AddForceAtPosition position");
+            FieldCheck.Finite(force, this, "force");
+            FieldCheck.Finite(position, this, "position");
             ThrowIfStepping(nameof(AddForceAtPosition));
             if (HasBody) World.AddForceAtPosition(_body, force, position, mode);
         }
@@ -308,7 +308,7 @@ namespace Fulcrum.Components
         /// </summary>
         public void MovePosition(Vector3 position)
         {
-            Validate.Finite(position, $"{this}: MovePosition position");
+            FieldCheck.Finite(position, this, "position");
             ThrowIfStepping(nameof(MovePosition));
             if (!HasBody) { transform.position = position; return; }
             if (!_isKinematic) { this.position = position; return; }
@@ -320,7 +320,7 @@ namespace Fulcrum.Components
         /// <summary>Turns the body to <paramref name="rotation"/> in the next step (see <see cref="MovePosition"/>).</summary>
         public void MoveRotation(Quaternion rotation)
         {
-            Quaternion q = Validate.Rotation(rotation, $"{this}: MoveRotation rotation");
+            Quaternion q = FieldCheck.Rotation(rotation, this, "rotation");
             ThrowIfStepping(nameof(MoveRotation));
             if (!HasBody) { transform.rotation = q; return; }
             if (!_isKinematic) { this.rotation = q; return; }

@@ -59,7 +59,7 @@ namespace Fulcrum.Components
         void DispatchMessages()
         {
             _eventCount = 0;
-            ReadOnlySpan<ContactEvent> world = WorldContactEvents();
+            ReadOnlySpan<ContactEvent> world = WorldEvents.Of(_world);
             for (int k = 0; k < world.Length; k++) AppendEvent(world[k]);
             for (int k = 0; k < _injectedCount; k++) AppendEvent(_injected[k]);
             _injectedCount = 0;
@@ -77,10 +77,6 @@ namespace Fulcrum.Components
                 _dispatching = null;
             }
         }
-
-        // The world's contact events of the last step. The narrow phase that fills them is not
-        // in Fulcrum.Core yet; until it is, only injected events are dispatched.
-        ReadOnlySpan<ContactEvent> WorldContactEvents() => ReadOnlySpan<ContactEvent>.Empty;
 
         void AppendEvent(in ContactEvent e)
         {

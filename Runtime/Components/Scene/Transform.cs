@@ -38,7 +38,7 @@ namespace Fulcrum.Components
             get => _localPosition;
             set
             {
-                Validate.Finite(value, $"Transform of '{_entity.name}': localPosition");
+                FieldCheck.Finite(value, this, "localPosition");
                 _localPosition = value;
                 _version++;
             }
@@ -50,7 +50,7 @@ namespace Fulcrum.Components
             get => _localRotation;
             set
             {
-                _localRotation = Validate.Rotation(value, $"Transform of '{_entity.name}': localRotation");
+                _localRotation = FieldCheck.Rotation(value, this, "localRotation");
                 _version++;
             }
         }
@@ -61,7 +61,7 @@ namespace Fulcrum.Components
             get => _parent == null ? _localPosition : _parent.TransformPoint(_localPosition);
             set
             {
-                Validate.Finite(value, $"Transform of '{_entity.name}': position");
+                FieldCheck.Finite(value, this, "position");
                 _localPosition = _parent == null ? value : _parent.InverseTransformPoint(value);
                 _version++;
             }
@@ -73,7 +73,7 @@ namespace Fulcrum.Components
             get => _parent == null ? _localRotation : Quaternion.Normalize(_parent.rotation * _localRotation);
             set
             {
-                Quaternion q = Validate.Rotation(value, $"Transform of '{_entity.name}': rotation");
+                Quaternion q = FieldCheck.Rotation(value, this, "rotation");
                 _localRotation = _parent == null ? q : Quaternion.Normalize(Quaternion.Conjugate(_parent.rotation) * q);
                 _version++;
             }
@@ -212,5 +212,8 @@ namespace Fulcrum.Components
         }
 
         internal List<Transform> Children => _children;
+
+        /// <summary>"Transform of 'entity'": how errors name it.</summary>
+        public override string ToString() => $"Transform of '{_entity.name}'";
     }
 }
