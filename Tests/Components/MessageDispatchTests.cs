@@ -32,7 +32,8 @@ namespace Fulcrum.Tests.Components
             Entity ground = r.Scene.CreateEntity("Ground");
             r.Ground = ground.AddComponent<BoxCollider>();
             r.GroundLog = ground.AddComponent<Recorder>();
-            Entity ball = r.Scene.CreateEntity("Ball", new Vector3(0, 1, 0));
+            // Far apart: only injected events reach them.
+            Entity ball = r.Scene.CreateEntity("Ball", new Vector3(0, 10, 0));
             ball.AddComponent<Rigidbody>();
             r.Ball = ball.AddComponent<SphereCollider>();
             r.BallLog = ball.AddComponent<Recorder>();
@@ -144,7 +145,7 @@ namespace Fulcrum.Tests.Components
         public void Messages_reach_the_rigidbody_entity_of_a_child_collider_and_disabled_behaviours()
         {
             Rig r = Build();
-            Entity arm = r.Scene.CreateEntity("Arm", new Vector3(1, 1, 0), parent: r.Ball.entity);
+            Entity arm = r.Scene.CreateEntity("Arm", new Vector3(1, 10, 0), parent: r.Ball.entity);
             var armBox = arm.AddComponent<BoxCollider>();
             var armLog = arm.AddComponent<Recorder>();
             r.BallLog.enabled = false;

@@ -126,8 +126,8 @@ namespace Fulcrum.Tests.Components
             var listener = new Listener();
             bridge.ContactListener = listener;
             ProxyHandle floor = bridge.Register(new Thing("floor", Vector3.Zero), BodyDef.Static(Vector3.Zero), Ball, DriveMode.Game);
-            ProxyHandle a = bridge.Register(new Thing("a", Vector3.UnitY), BodyDef.Default, Ball);
-            ProxyHandle b = bridge.Register(new Thing("b", Vector3.UnitX), BodyDef.Default, Ball);
+            ProxyHandle a = bridge.Register(new Thing("a", new Vector3(0, 10, 0)), BodyDef.Default, Ball);
+            ProxyHandle b = bridge.Register(new Thing("b", new Vector3(10, 0, 0)), BodyDef.Default, Ball);
             bridge.InjectContactEvent(Touch(bridge, floor, a, ContactEventKind.Begin));
             bridge.InjectContactEvent(Touch(bridge, floor, b, ContactEventKind.Persist));
             Assert.That(listener.Log, Is.Empty, "nothing before the step");
@@ -142,8 +142,8 @@ namespace Fulcrum.Tests.Components
             var listener = new Listener();
             bridge.ContactListener = listener;
             ProxyHandle floor = bridge.Register(new Thing("floor", Vector3.Zero), BodyDef.Static(Vector3.Zero), Ball, DriveMode.Game);
-            ProxyHandle a = bridge.Register(new Thing("a", Vector3.UnitY), BodyDef.Default, Ball);
-            ProxyHandle b = bridge.Register(new Thing("b", Vector3.UnitX), BodyDef.Default, Ball);
+            ProxyHandle a = bridge.Register(new Thing("a", new Vector3(0, 10, 0)), BodyDef.Default, Ball);
+            ProxyHandle b = bridge.Register(new Thing("b", new Vector3(10, 0, 0)), BodyDef.Default, Ball);
             BodyHandle aBody = bridge.GetBody(a);
             ProxyHandle spawned = default;
             int bodiesDuringCallback = -1;
@@ -151,7 +151,7 @@ namespace Fulcrum.Tests.Components
             {
                 if (c.Kind != ContactEventKind.Begin || c.ProxyB != a) return;
                 bridge.Unregister(a);
-                spawned = bridge.Register(new Thing("spawned", new Vector3(0, 5, 0)), BodyDef.Default, Ball);
+                spawned = bridge.Register(new Thing("spawned", new Vector3(0, 20, 0)), BodyDef.Default, Ball);
                 bodiesDuringCallback = bridge.World.BodyCount;
                 Assert.Throws<InvalidOperationException>(() => bridge.Step(0.25f));
             };
@@ -176,7 +176,7 @@ namespace Fulcrum.Tests.Components
             Assert.That(listener.Log, Is.EqualTo(new[] { "End floor a" }));
 
             // Its slot is reused with a new generation; the old handle stays stale.
-            ProxyHandle again = bridge.Register(new Thing("again", Vector3.Zero), BodyDef.Default, Ball);
+            ProxyHandle again = bridge.Register(new Thing("again", new Vector3(0, -20, 0)), BodyDef.Default, Ball);
             Assert.That(again, Is.Not.EqualTo(a));
             Assert.That(bridge.IsRegistered(a), Is.False);
         }
@@ -186,7 +186,7 @@ namespace Fulcrum.Tests.Components
         {
             using PhysicsBridge bridge = NewBridge(haptics: 2);
             ProxyHandle floor = bridge.Register(new Thing("floor", Vector3.Zero), BodyDef.Static(Vector3.Zero), Ball, DriveMode.Game);
-            ProxyHandle hand = bridge.Register(new Thing("hand", Vector3.UnitY), BodyDef.Default, Ball);
+            ProxyHandle hand = bridge.Register(new Thing("hand", new Vector3(0, 10, 0)), BodyDef.Default, Ball);
             bridge.SetHaptics(hand, true);
             bridge.InjectContactEvent(Touch(bridge, floor, hand, ContactEventKind.Begin, impulse: 2f));
             bridge.Step(0.25f);

@@ -16,8 +16,9 @@ namespace Fulcrum.Components
     /// </summary>
     public sealed class Collision
     {
-        internal const int MaxContacts = 4;
-        ContactPoint _c0, _c1, _c2, _c3;
+        // Up to four manifolds of four points each for one pair of shapes.
+        internal const int MaxContacts = 16;
+        readonly ContactPoint[] _contacts = new ContactPoint[MaxContacts];
         int _count;
 
         internal Collision() { }
@@ -51,13 +52,7 @@ namespace Fulcrum.Components
         {
             if ((uint)index >= (uint)_count)
                 throw new ArgumentOutOfRangeException(nameof(index), $"Collision has {_count} contacts; index {index} is out of range.");
-            switch (index)
-            {
-                case 0: return _c0;
-                case 1: return _c1;
-                case 2: return _c2;
-                default: return _c3;
-            }
+            return _contacts[index];
         }
 
         /// <summary>Copies the contact points into <paramref name="into"/>; returns how many were copied.</summary>
@@ -79,15 +74,7 @@ namespace Fulcrum.Components
 
         internal void AddContact(in ContactPoint p)
         {
-            switch (_count)
-            {
-                case 0: _c0 = p; break;
-                case 1: _c1 = p; break;
-                case 2: _c2 = p; break;
-                case 3: _c3 = p; break;
-                default: return;
-            }
-            _count++;
+            if (_count < MaxContacts) _contacts[_count++] = p;
         }
     }
 }

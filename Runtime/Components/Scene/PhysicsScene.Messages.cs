@@ -133,9 +133,9 @@ namespace Fulcrum.Components
             Vector3 impulse = normalTowardsSelf * e.NormalImpulse;
             Collision c = _collision;
             c.Reset(self, other, impulse, relativeVelocity);
-            if (e.Kind != ContactEventKind.End && e.PointCount > 0)
+            if (e.Kind != ContactEventKind.End && !AddManifoldPoints(c, e, self, other, self == GetCollider(e.ShapeA)) && e.PointCount > 0)
             {
-                // The event carries the manifold's average point; per-point data come with the manifold.
+                // No live contact for the pair (an injected event): the event's average point stands in.
                 c.AddContact(new ContactPoint
                 {
                     point = e.Point,
@@ -150,6 +150,35 @@ namespace Fulcrum.Components
             SendCollisionTo(ent, c, e.Kind);
             Rigidbody? rb = self.attachedRigidbody;
             if (rb != null && rb.entity != ent) SendCollisionTo(rb.entity, c, e.Kind);
+        }
+
+        // Copies the points of the pair's manifolds, seen from self; false when the world has no
+        // contact for the pair.
+        bool AddManifoldPoints(Collision c, in ContactEvent e, Collider self, Collider other, bool selfIsA)
+        {
+            if (!_world.IsValid(e.ShapeA) || !_world.IsValid(e.ShapeB)) return false;
+            ContactGraph g = _world.ContactGraph;
+            int k = g.Find(e.ShapeA.Index, e.ShapeB.Index);
+            if (k < 0) return false;
+            for (int m = g.Contacts[k].FirstManifold; m >= 0; m = g.ManifoldNext[m])
+            {
+                ref ContactManifold mf = ref g.Manifolds[m];
+                Vector3 n = selfIsA ? -mf.Normal : mf.Normal;
+                for (int i = 0; i < mf.PointCount; i++)
+                {
+                    ref Fulcrum.Collision.ContactPoint p = ref ContactManifold.Point(ref mf, i);
+                    c.AddContact(new ContactPoint
+                    {
+                        point = p.Position,
+                        normal = n,
+                        separation = p.Separation,
+                        impulse = n * p.NormalImpulse,
+                        thisCollider = self,
+                        otherCollider = other,
+                    });
+                }
+            }
+            return true;
         }
 
         static void SendCollisionTo(Entity e, Collision c, ContactEventKind kind)
