@@ -118,10 +118,12 @@ namespace Fulcrum.Components
         void StepAndDispatch(float dt)
         {
             PushEditedTransforms();
+            BuildPendingJoints();
             BeforeStepConstraints();
             _world.Step(dt);
             AfterStep();
             DispatchMessages();
+            DispatchJointBreaks();
         }
 
         // Transforms that user code moved since the host last wrote them teleport their bodies

@@ -284,6 +284,7 @@ namespace Fulcrum.Components
             _rigidbodies.RemoveAll(IsDestroyedComponent);
             _colliders.RemoveAll(IsDestroyedComponent);
             _behaviours.RemoveAll(IsDestroyedComponent);
+            _joints.RemoveAll(IsDestroyedComponent);
             _startQueue.RemoveAll(IsDestroyedComponent);
             for (int k = 0; k < _behaviours.Count; k++) _behaviours[k].UpdateIndex = k;
         }
