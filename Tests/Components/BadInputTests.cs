@@ -58,7 +58,7 @@ namespace Fulcrum.Tests.Components
             car.AddComponent<Rigidbody>();
             car.AddComponent<BoxCollider>();
             Entity body = scene.CreateEntity("Shell", parent: car);
-            var mesh = body.AddComponent<MeshCollider>();
+            var mesh = body.AddComponent<Fulcrum.Components.MeshCollider>();
             var tetra = new Mesh(new[] { Vector3.Zero, Vector3.UnitX, Vector3.UnitY, Vector3.UnitZ }, new[] { 0, 1, 2, 0, 1, 3, 0, 2, 3, 1, 2, 3 });
             var ex = Assert.Throws<InvalidOperationException>(() => mesh.sharedMesh = tetra)!;
             Assert.That(ex.Message, Does.Contain("MeshCollider on 'Shell'").And.Contain("convex = false"));

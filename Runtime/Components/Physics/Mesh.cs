@@ -37,6 +37,8 @@ namespace Fulcrum.Components
                 for (int i = 0; i < value.Length; i++)
                     if (!Validate.IsFinite(value[i])) throw new ArgumentException($"Mesh '{name}': vertices[{i}] must be finite, got {value[i]}.", nameof(vertices));
                 _vertices = (Vector3[])value.Clone();
+                Hull = null;
+                Triangles = null;
             }
         }
 
@@ -52,10 +54,14 @@ namespace Fulcrum.Components
                     if ((uint)value[i] >= (uint)_vertices.Length)
                         throw new ArgumentException($"Mesh '{name}': triangles[{i}] = {value[i]} is outside the {_vertices.Length} vertices.", nameof(triangles));
                 _triangles = (int[])value.Clone();
+                Triangles = null;
             }
         }
 
         internal Vector3[] VerticesNoCopy => _vertices;
+        // Built on first use by a collider and shared (hull for convex colliders, BVH mesh for static ones).
+        internal ConvexHull? Hull;
+        internal TriangleMesh? Triangles;
         internal int[] TrianglesNoCopy => _triangles;
     }
 }

@@ -4,7 +4,8 @@ namespace Fulcrum.Components
 {
     /// <summary>
     /// A collider from a <see cref="Mesh"/>: its convex hull when <see cref="convex"/> is set
-    /// (for rigidbodies), else the triangle mesh itself (static colliders only, as in Unity).
+    /// (for rigidbodies), else the triangle mesh itself (static colliders only, as in Unity;
+    /// Fulcrum's triangles are one-sided: their front is where (b - a) x (c - a) points).
     /// </summary>
     public sealed class MeshCollider : Collider
     {

@@ -3,17 +3,29 @@ using System;
 namespace Fulcrum.Components
 {
     /// <summary>
-    /// Turns a <see cref="Mesh"/> into Core geometry (a convex hull or a triangle mesh). The
-    /// hull and mesh kinds are not built into Fulcrum.Core yet, so this throws a clear
-    /// <see cref="NotSupportedException"/> until they are.
+    /// Turns a <see cref="Mesh"/> into Core geometry: its convex hull (quickhull) or a static
+    /// triangle mesh (with its BVH). Both are built once per mesh and shared by every collider
+    /// that uses it; a Core rejection (coplanar points, degenerate triangles) is reported with
+    /// the collider and the mesh named.
     /// </summary>
     internal static class MeshGeometry
     {
         public static ShapeGeometry Build(MeshCollider collider, Mesh mesh, bool convex)
         {
-            throw new NotSupportedException(
-                $"{collider}: {(convex ? "convex hull" : "triangle mesh")} shapes are not available in this build of Fulcrum.Core " +
-                "(ShapeGeometry has no hull or mesh factory yet); use Box, Sphere or Capsule colliders.");
+            try
+            {
+                if (convex)
+                {
+                    mesh.Hull ??= ConvexHull.Create(mesh.VerticesNoCopy);
+                    return ShapeGeometry.ConvexHull(mesh.Hull);
+                }
+                mesh.Triangles ??= TriangleMesh.Create(mesh.VerticesNoCopy, mesh.TrianglesNoCopy);
+                return ShapeGeometry.TriangleMesh(mesh.Triangles);
+            }
+            catch (ArgumentException e)
+            {
+                throw new ArgumentException($"{collider}: sharedMesh '{mesh.name}' cannot make a {(convex ? "convex hull" : "triangle mesh")}: {e.Message}", "sharedMesh", e);
+            }
         }
     }
 }
