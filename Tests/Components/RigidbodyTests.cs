@@ -230,5 +230,35 @@ namespace Fulcrum.Tests.Components
             Assert.That(scene.world.BodyCount, Is.EqualTo(1));
             Assert.That(rb.linearVelocity.Z, Is.EqualTo(2f));
         }
+
+        public class Thruster : Behaviour
+        {
+            Rigidbody? _rb;
+            protected override void Start() => _rb = GetComponent<Rigidbody>();
+            protected override void FixedUpdate()
+            {
+                _rb!.AddForce(new Vector3(0, 9.81f * _rb.mass, 0));
+                _rb.AddTorque(new Vector3(0, 0.01f, 0), ForceMode.Acceleration);
+            }
+            public float Height;
+            protected override void Update() => Height = transform.position.Y;
+        }
+
+        [Test]
+        public void A_warm_component_frame_allocates_nothing()
+        {
+            var scene = new PhysicsScene(WorldSettings.Default, 1f / 50f);
+            for (int k = 0; k < 20; k++)
+            {
+                Rigidbody rb = Ball(scene, new Vector3(k * 3, 5, 0));
+                rb.interpolation = k % 2 == 0 ? RigidbodyInterpolation.Interpolate : RigidbodyInterpolation.Extrapolate;
+                rb.constraints = k % 3 == 0 ? RigidbodyConstraints.FreezeRotationX : RigidbodyConstraints.None;
+                rb.entity.AddComponent<Thruster>();
+            }
+            Entity ground = scene.CreateEntity("Ground", new Vector3(0, -1, 0));
+            ground.AddComponent<BoxCollider>().size = new Vector3(100, 1, 100);
+            long bytes = AllocationProbe.SteadyStateBytes(() => scene.Tick(1f / 60f));
+            Assert.That(bytes, Is.EqualTo(0));
+        }
     }
 }
