@@ -1,0 +1,101 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.SoftBodies
+{
+    /// <summary>
+    /// Vertex-versus-rigid-shape contacts of one soft body. Once per step the shapes whose
+    /// bounds (swept over the step) come near the body's are gathered; each substep every free
+    /// vertex is pushed out of each of them to <see cref="SoftBody.CollisionRadius"/> as a
+    /// zero-compliance XPBD constraint shared with the shape's body through its generalised
+    /// inverse mass, then Coulomb friction removes the relative tangential displacement of the
+    /// substep up to mu times the normal correction (Mueller et al. 2020, "Detailed Rigid Body
+    /// Simulation with Extended Position Based Dynamics", section 3.5).
+    /// </summary>
+    internal sealed class ShapeContactSolver
+    {
+        int[] _shapes = Array.Empty<int>();
+        int _count;
+
+        /// <summary>Shapes gathered for this step.</summary>
+        public int CandidateCount => _count;
+
+        /// <summary>Finds the shapes this body may touch during a step of <paramref name="dt"/>; tracks their bodies in <paramref name="coupling"/>.</summary>
+        public void Gather(World world, SoftBody body, float dt, RigidCoupling coupling)
+        {
+            _count = 0;
+            Vector3[] x = body.X, v = body.V;
+            Aabb bounds = Aabb.Empty;
+            float maxSpeed2 = 0;
+            for (int i = 0; i < x.Length; i++)
+            {
+                bounds = Aabb.Union(bounds, x[i]);
+                maxSpeed2 = MathF.Max(maxSpeed2, v[i].LengthSquared());
+            }
+            float gravity = (world.Gravity * body.GravityScale).Length();
+            bounds = bounds.Expanded(body.CollisionRadius + MathF.Sqrt(maxSpeed2) * dt + gravity * dt * dt + 0.01f);
+
+            ShapeStorage s = world.Shapes;
+            BodyStorage b = world.Bodies;
+            for (int k = 0; k < s.ActiveCount; k++)
+            {
+                int shape = s.Active[k];
+                if (s.IsSensor[shape]) continue;
+                if ((s.CollidesWith[shape] & (1u << body.Layer)) == 0 || (body.CollidesWith & (1u << s.Layer[shape])) == 0) continue;
+                int owner = s.Body[shape];
+                Aabb box;
+                if (b.Type[owner] == BodyType.Static) box = s.WorldAabb[shape];
+                else
+                {
+                    box = s.Geometry[shape].ComputeAabb(world.ShapeWorldPose(shape));
+                    Pose start = new Pose(b.PreviousPosition[owner], b.PreviousRotation[owner]) * s.LocalPose[shape];
+                    box = Aabb.Union(box, s.Geometry[shape].ComputeAabb(start));
+                }
+                if (!box.Overlaps(bounds)) continue;
+                if (_count == _shapes.Length) Array.Resize(ref _shapes, Math.Max(8, 2 * _count));
+                _shapes[_count++] = shape;
+                coupling.Track(owner);
+            }
+        }
+
+        /// <summary>One pass over the gathered shapes for every free vertex, in a fixed order.</summary>
+        public void Solve(World world, SoftBody body, float h, RigidCoupling coupling)
+        {
+            ShapeStorage s = world.Shapes;
+            Vector3[] x = body.X, xPrev = body.XPrev;
+            float[] w = body.W;
+            float radius = body.CollisionRadius;
+            for (int k = 0; k < _count; k++)
+            {
+                int shape = _shapes[k];
+                int owner = s.Body[shape];
+                Pose pose = world.ShapeWorldPose(shape);
+                ShapeGeometry geometry = s.Geometry[shape];
+                float mu = Combine.Values(body.Friction, s.FrictionCombine[shape], s.Friction[shape], s.FrictionCombine[shape]);
+                for (int i = 0; i < x.Length; i++)
+                {
+                    float wi = w[i];
+                    if (wi == 0f) continue;
+                    if (!ShapeDistance.Query(geometry, pose, x[i], radius, out float distance, out Vector3 n)) continue;
+                    Vector3 contact = x[i] - n * distance;
+                    float wb = coupling.InverseMassAt(owner, contact, n);
+                    float dl = (radius - distance) / (wi + wb);
+                    x[i] += wi * dl * n;
+                    coupling.Push(owner, contact, -dl * n, h);
+
+                    Vector3 relative = (x[i] - xPrev[i]) - coupling.PointVelocity(owner, contact) * h;
+                    Vector3 tangent = relative - Vector3.Dot(relative, n) * n;
+                    float slip = tangent.Length();
+                    if (slip < 1e-9f) continue;
+                    Vector3 t = tangent / slip;
+                    float dlt = slip / (wi + coupling.InverseMassAt(owner, contact, t));
+                    // Static friction holds the whole slip; beyond the cone the correction is capped.
+                    if (dlt > mu * dl) dlt = mu * dl;
+                    x[i] -= wi * dlt * t;
+                    coupling.Push(owner, contact, dlt * t, h);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,147 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace Fulcrum.SoftBodies
+{
+    /// <summary>
+    /// Tetrahedral meshes of a box on a regular grid, and of spheres and capsules carved out of
+    /// such a grid. Vertices are centred on the origin; every tet is positively oriented.
+    /// </summary>
+    internal static class GridTetGenerator
+    {
+        // Cube corners by bit: x = 1, y = 2, z = 4.
+        static readonly int[] SixSplit =
+        {
+            0, 1, 3, 7,   0, 1, 5, 7,   0, 2, 3, 7,   0, 2, 6, 7,   0, 4, 5, 7,   0, 4, 6, 7,
+        };
+
+        // Even cells: the central tet joins the corners of even bit count; odd cells mirror it.
+        static readonly int[] FiveSplitEven =
+        {
+            0, 3, 5, 6,   1, 0, 3, 5,   2, 0, 3, 6,   4, 0, 5, 6,   7, 3, 5, 6,
+        };
+
+        static readonly int[] FiveSplitOdd =
+        {
+            1, 2, 4, 7,   0, 1, 2, 4,   3, 1, 2, 7,   5, 1, 4, 7,   6, 2, 4, 7,
+        };
+
+        /// <summary>A box of <paramref name="size"/> metres centred on the origin, cut into cells and each cell into tets.</summary>
+        public static void Box(Vector3 size, int nx, int ny, int nz, TetSplit split, out Vector3[] vertices, out int[] tets)
+        {
+            int sx = nx + 1, sy = ny + 1, sz = nz + 1;
+            vertices = new Vector3[sx * sy * sz];
+            Vector3 cell = new Vector3(size.X / nx, size.Y / ny, size.Z / nz);
+            Vector3 origin = -0.5f * size;
+            for (int k = 0; k < sz; k++)
+                for (int j = 0; j < sy; j++)
+                    for (int i = 0; i < sx; i++)
+                        vertices[i + sx * (j + sy * k)] = origin + new Vector3(i * cell.X, j * cell.Y, k * cell.Z);
+            int perCell = split == TetSplit.Six ? 6 : 5;
+            tets = new int[nx * ny * nz * perCell * 4];
+            int t = 0;
+            Span<int> corner = stackalloc int[8];
+            for (int k = 0; k < nz; k++)
+                for (int j = 0; j < ny; j++)
+                    for (int i = 0; i < nx; i++)
+                    {
+                        for (int c = 0; c < 8; c++)
+                            corner[c] = (i + (c & 1)) + sx * ((j + ((c >> 1) & 1)) + sy * (k + ((c >> 2) & 1)));
+                        int[] pattern = split == TetSplit.Six ? SixSplit : ((i + j + k) & 1) == 0 ? FiveSplitEven : FiveSplitOdd;
+                        for (int p = 0; p < pattern.Length; p += 4)
+                        {
+                            tets[t] = corner[pattern[p]];
+                            tets[t + 1] = corner[pattern[p + 1]];
+                            tets[t + 2] = corner[pattern[p + 2]];
+                            tets[t + 3] = corner[pattern[p + 3]];
+                            t += 4;
+                        }
+                    }
+            OrientPositive(vertices, tets);
+        }
+
+        /// <summary>
+        /// A solid carved from a grid: keeps the tets whose centroid satisfies
+        /// <paramref name="inside"/>, drops unused vertices, then moves each surface vertex onto
+        /// the true surface (<paramref name="project"/>) where that keeps its tets well shaped.
+        /// </summary>
+        public static void Carve(Vector3 size, int nx, int ny, int nz, Func<Vector3, bool> inside, Func<Vector3, Vector3> project,
+            out Vector3[] vertices, out int[] tets)
+        {
+            Box(size, nx, ny, nz, TetSplit.Six, out Vector3[] gridVertices, out int[] gridTets);
+            var kept = new List<int>(gridTets.Length);
+            for (int t = 0; t < gridTets.Length; t += 4)
+            {
+                Vector3 c = 0.25f * (gridVertices[gridTets[t]] + gridVertices[gridTets[t + 1]] + gridVertices[gridTets[t + 2]] + gridVertices[gridTets[t + 3]]);
+                if (inside(c)) for (int q = 0; q < 4; q++) kept.Add(gridTets[t + q]);
+            }
+            var remap = new int[gridVertices.Length];
+            for (int i = 0; i < remap.Length; i++) remap[i] = -1;
+            var used = new List<Vector3>();
+            tets = new int[kept.Count];
+            for (int q = 0; q < kept.Count; q++)
+            {
+                int v = kept[q];
+                if (remap[v] < 0)
+                {
+                    remap[v] = used.Count;
+                    used.Add(gridVertices[v]);
+                }
+                tets[q] = remap[v];
+            }
+            vertices = used.ToArray();
+            SnapSurface(vertices, tets, project);
+        }
+
+        // Moving a surface vertex can flatten a thin tet; a move is kept only if every tet
+        // around the vertex keeps at least a quarter of its grid volume.
+        static void SnapSurface(Vector3[] vertices, int[] tets, Func<Vector3, Vector3> project)
+        {
+            int[] surface = TetSurface.Extract(vertices, tets);
+            var onSurface = new bool[vertices.Length];
+            foreach (int v in surface) onSurface[v] = true;
+            var incident = new List<int>[vertices.Length];
+            for (int t = 0; t < tets.Length; t += 4)
+                for (int q = 0; q < 4; q++)
+                    (incident[tets[t + q]] ??= new List<int>()).Add(t);
+            var restVolume = new float[tets.Length / 4];
+            for (int t = 0; t < tets.Length; t += 4) restVolume[t / 4] = SignedVolume(vertices, tets, t);
+            for (int v = 0; v < vertices.Length; v++)
+            {
+                if (!onSurface[v]) continue;
+                Vector3 old = vertices[v];
+                vertices[v] = project(old);
+                foreach (int t in incident[v]!)
+                {
+                    if (SignedVolume(vertices, tets, t) < 0.25f * restVolume[t / 4])
+                    {
+                        vertices[v] = old;
+                        break;
+                    }
+                }
+            }
+        }
+
+        /// <summary>Swaps the last two vertices of every negatively oriented tet.</summary>
+        public static void OrientPositive(Vector3[] vertices, int[] tets)
+        {
+            for (int t = 0; t < tets.Length; t += 4)
+            {
+                if (SignedVolume(vertices, tets, t) < 0)
+                {
+                    int tmp = tets[t + 2];
+                    tets[t + 2] = tets[t + 3];
+                    tets[t + 3] = tmp;
+                }
+            }
+        }
+
+        /// <summary>det[x1-x0, x2-x0, x3-x0] / 6 of the tet starting at <paramref name="t"/> in the flat index list.</summary>
+        public static float SignedVolume(Vector3[] vertices, int[] tets, int t)
+        {
+            Vector3 x0 = vertices[tets[t]];
+            return Vector3.Dot(vertices[tets[t + 1]] - x0, Vector3.Cross(vertices[tets[t + 2]] - x0, vertices[tets[t + 3]] - x0)) / 6f;
+        }
+    }
+}

@@ -1,0 +1,101 @@
+using System;
+using System.Numerics;
+
+namespace Fulcrum.SoftBodies
+{
+    public sealed partial class SoftBody
+    {
+        RangeJob? _tetJob;
+        MembraneRangeJob? _membraneJob;
+        BendingRangeJob? _bendingJob;
+
+        /// <summary>Once per world step, before the substeps: find the shapes and pairs the step may touch.</summary>
+        internal void BeginStep(float dt, RigidCoupling coupling)
+        {
+            if (CollideWithShapes) Contacts.Gather(World, this, dt, coupling);
+            AttachmentSolver.Track(World, Attachments, coupling);
+            SelfContacts?.FindPairs(X, V, dt);
+        }
+
+        /// <summary>
+        /// One XPBD substep of length <paramref name="h"/>: predict with gravity; per iteration
+        /// project contacts, the elastic constraints (multipliers start at zero and are kept
+        /// across the iterations) and attachments; velocities from the change in position.
+        /// </summary>
+        internal void Substep(float h, RigidCoupling coupling, ParallelRanges? pool)
+        {
+            Vector3 dv = World.Gravity * (GravityScale * h);
+            float keep = LinearDamping > 0 ? 1f / (1f + LinearDamping * h) : 1f;
+            for (int i = 0; i < X.Length; i++)
+            {
+                XPrev[i] = X[i];
+                if (W[i] == 0f) continue;
+                V[i] = (V[i] + dv) * keep;
+                X[i] += V[i] * h;
+            }
+            Array.Clear(TetLambda, 0, TetLambda.Length);
+            Array.Clear(TriLambda, 0, TriLambda.Length);
+            Array.Clear(BendLambda, 0, BendLambda.Length);
+            float gamma = DampingTime / h;
+            for (int iteration = 0; iteration < Iterations; iteration++)
+            {
+                // Contacts before the elastic pass: projected after it, they keep re-straining
+                // the elements that touch the ground, and a stiff body settles with that strain
+                // locked in (a cube at E = 1e9 Pa kept 1.2e4 J; this order leaves 185 J).
+                if (CollideWithShapes) Contacts.Solve(World, this, h, coupling);
+                if (Tets.Length > 0) RunColors(TetJob(h, gamma), TetColors, pool);
+                if (Tris.Length > 0)
+                {
+                    _membraneJob ??= new MembraneRangeJob(this);
+                    _membraneJob.H = h;
+                    _membraneJob.Gamma = gamma;
+                    RunColors(_membraneJob, TriColors, pool);
+                }
+                if (Bends.Length > 0)
+                {
+                    _bendingJob ??= new BendingRangeJob(this);
+                    _bendingJob.H = h;
+                    _bendingJob.Gamma = gamma;
+                    RunColors(_bendingJob, BendColors, pool);
+                }
+                if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
+            }
+            SelfContacts?.Solve(X, W);
+            float invH = 1f / h;
+            for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;
+        }
+
+        /// <summary>Once per world step, after the substeps.</summary>
+        internal void EndStep(float dt)
+        {
+            if (Plasticity.Enabled && Tets.Length > 0) PlasticFlow.Apply(this, dt);
+        }
+
+        RangeJob TetJob(float h, float gamma)
+        {
+            if (Material.Model == MaterialModel.NeoHookean)
+            {
+                var job = (TetRangeJob<NeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<NeoHookeanEnergy>(this, ClassicModel));
+                job.H = h;
+                job.Gamma = gamma;
+                return job;
+            }
+            else
+            {
+                var job = (TetRangeJob<StableNeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<StableNeoHookeanEnergy>(this, StableModel));
+                job.H = h;
+                job.Gamma = gamma;
+                return job;
+            }
+        }
+
+        static void RunColors(RangeJob job, int[] colors, ParallelRanges? pool)
+        {
+            for (int c = 0; c + 1 < colors.Length; c++)
+            {
+                if (pool != null) pool.Run(job, colors[c], colors[c + 1]);
+                else job.Execute(colors[c], colors[c + 1]);
+            }
+        }
+    }
+}

@@ -1,0 +1,104 @@
+using System;
+using System.Collections.Generic;
+
+namespace Fulcrum.SoftBodies
+{
+    /// <summary>
+    /// The soft bodies of one world and the <see cref="StepStage.SoftBodies"/> stage that steps
+    /// them. Installed as <see cref="World.SoftBodyStage"/> by the first
+    /// <see cref="SoftBodyWorldExtensions.CreateSoftBody"/>. All bodies advance through the
+    /// substeps together (the largest substep count any of them asks for), so a rigid body
+    /// touched by two soft bodies sees both at the same instants.
+    /// Reads and writes the rigid bodies it touches (pose, velocity) through <see cref="RigidCoupling"/>.
+    /// </summary>
+    public sealed class SoftBodySystem : ISoftBodyStage
+    {
+        readonly World _world;
+        readonly List<SoftBody?> _slots = new List<SoftBody?>();
+        readonly List<int> _generations = new List<int>();
+        readonly Stack<int> _free = new Stack<int>();
+        readonly List<SoftBody> _active = new List<SoftBody>();
+        readonly RigidCoupling _coupling = new RigidCoupling();
+        ParallelRanges? _pool;
+
+        internal SoftBodySystem(World world) => _world = world;
+
+        /// <summary>The system of a world, or null when it has no soft-body stage yet.</summary>
+        public static SoftBodySystem? Of(World world) => world.SoftBodyStage as SoftBodySystem;
+
+        /// <summary>Live soft bodies.</summary>
+        public int Count => _active.Count;
+
+        /// <inheritdoc/>
+        public bool HasWork => _active.Count > 0;
+
+        /// <summary>The live body at position <paramref name="index"/> (0 .. Count - 1, creation order with removals swapped in).</summary>
+        public SoftBody this[int index] => _active[index];
+
+        internal SoftBodyHandle Add(in SoftBodyDef def)
+        {
+            int slot = _free.Count > 0 ? _free.Peek() : _slots.Count;
+            int generation = (slot < _generations.Count ? _generations[slot] : 0) + 1;
+            if (generation <= 0) generation = 1;
+            // Build first: a bad def throws before the system changes.
+            var body = new SoftBody(_world, slot, generation, def);
+            if (_free.Count > 0) _free.Pop();
+            if (slot == _slots.Count)
+            {
+                _slots.Add(body);
+                _generations.Add(generation);
+            }
+            else
+            {
+                _slots[slot] = body;
+                _generations[slot] = generation;
+            }
+            _active.Add(body);
+            return body.Handle;
+        }
+
+        internal void Remove(SoftBodyHandle handle)
+        {
+            SoftBody body = Get(handle);
+            body.Destroyed = true;
+            _slots[handle.Index] = null;
+            _free.Push(handle.Index);
+            int at = _active.IndexOf(body);
+            _active[at] = _active[_active.Count - 1];
+            _active.RemoveAt(_active.Count - 1);
+        }
+
+        internal bool IsLive(SoftBodyHandle handle) =>
+            handle.Generation != 0 && (uint)handle.Index < (uint)_slots.Count && _slots[handle.Index] is SoftBody b && b.Generation == handle.Generation;
+
+        internal SoftBody Get(SoftBodyHandle handle)
+        {
+            if (!IsLive(handle))
+                throw new StaleHandleException(handle.IsNone
+                    ? "The soft body handle is None."
+                    : $"{handle} does not name a live soft body: it was destroyed, or belongs to another world.");
+            return _slots[handle.Index]!;
+        }
+
+        /// <inheritdoc/>
+        public void Step(World world, float dt)
+        {
+            if (_active.Count == 0) return;
+            int threads = world.Settings.Threads;
+            if (threads > 1 && (_pool == null || _pool.Threads != threads)) _pool = new ParallelRanges(threads);
+            ParallelRanges? pool = threads > 1 ? _pool : null;
+
+            int substeps = 1;
+            for (int k = 0; k < _active.Count; k++) substeps = Math.Max(substeps, _active[k].SubstepsFor(dt));
+            float h = dt / substeps;
+            _coupling.Begin(world.Bodies);
+            for (int k = 0; k < _active.Count; k++) _active[k].BeginStep(dt, _coupling);
+            for (int s = 0; s < substeps; s++)
+            {
+                _coupling.BeginSubstep((s + 1f) / substeps, h);
+                for (int k = 0; k < _active.Count; k++) _active[k].Substep(h, _coupling, pool);
+            }
+            for (int k = 0; k < _active.Count; k++) _active[k].EndStep(dt);
+        }
+    }
+}

@@ -1,0 +1,60 @@
+using System.Numerics;
+
+namespace Fulcrum.SoftBodies
+{
+    /// <summary>
+    /// XPBD projection of membrane triangles, the 2D counterpart of <see cref="XpbdTetSolver"/>:
+    /// F = [x1 - x0, x2 - x0] Dm^-1 (3x2), two constraints solved together, compliances
+    /// 1/(mu A t) and 1/(lambda A t) for rest area A and thickness t.
+    /// </summary>
+    internal static class XpbdMembraneSolver
+    {
+        public static void Solve(in MembraneEnergy model, float thickness, TriangleElement[] tris, Vector2[] lambdas, Vector3[] x, Vector3[] xPrev,
+            float[] w, int start, int end, float h, float gamma)
+        {
+            float invH2 = 1f / (h * h);
+            float alphaDev = invH2 / (model.Mu * thickness);
+            float alphaVol = invH2 / (model.Lambda * thickness);
+            float s = 1f + gamma;
+            for (int e = start; e < end; e++)
+            {
+                ref TriangleElement t = ref tris[e];
+                float w0 = w[t.A], w1 = w[t.B], w2 = w[t.C];
+                if (w0 + w1 + w2 == 0f) continue;
+                Vector3 x0 = x[t.A], x1 = x[t.B], x2 = x[t.C];
+                Vector3 e1 = x1 - x0, e2 = x2 - x0;
+                Vector3 f0 = e1 * t.Inv00 + e2 * t.Inv10;
+                Vector3 f1 = e1 * t.Inv01 + e2 * t.Inv11;
+                model.Constraints(f0, f1, out float cD, out Vector3 dD0, out Vector3 dD1, out float cH, out Vector3 dH0, out Vector3 dH1);
+                // dC/d(x_k) = sum_j dC/df_j Dm^-1[k, j] for k = 1, 2; x_0 takes minus the sum.
+                Vector3 d1 = dD0 * t.Inv00 + dD1 * t.Inv01, d2 = dD0 * t.Inv10 + dD1 * t.Inv11, d0 = -(d1 + d2);
+                Vector3 g1 = dH0 * t.Inv00 + dH1 * t.Inv01, g2 = dH0 * t.Inv10 + dH1 * t.Inv11, g0 = -(g1 + g2);
+                float kDD = w0 * d0.LengthSquared() + w1 * d1.LengthSquared() + w2 * d2.LengthSquared();
+                float kHH = w0 * g0.LengthSquared() + w1 * g1.LengthSquared() + w2 * g2.LengthSquared();
+                float kDH = w0 * Vector3.Dot(d0, g0) + w1 * Vector3.Dot(d1, g1) + w2 * Vector3.Dot(d2, g2);
+                float invA = 1f / t.RestArea;
+                float aD = alphaDev * invA, aH = alphaVol * invA;
+                ref Vector2 lambda = ref lambdas[e];
+                float rD = -cD - aD * lambda.X;
+                float rH = -cH - aH * lambda.Y;
+                if (gamma > 0f)
+                {
+                    Vector3 v0 = x0 - xPrev[t.A], v1 = x1 - xPrev[t.B], v2 = x2 - xPrev[t.C];
+                    rD -= gamma * (Vector3.Dot(d0, v0) + Vector3.Dot(d1, v1) + Vector3.Dot(d2, v2));
+                    rH -= gamma * (Vector3.Dot(g0, v0) + Vector3.Dot(g1, v1) + Vector3.Dot(g2, v2));
+                }
+                float a11 = s * kDD + aD, a22 = s * kHH + aH, a12 = s * kDH;
+                float det = a11 * a22 - a12 * a12;
+                if (!(det > 1e-30f * a11 * a22)) continue;
+                float invDet = 1f / det;
+                float dlD = (rD * a22 - rH * a12) * invDet;
+                float dlH = (a11 * rH - a12 * rD) * invDet;
+                lambda.X += dlD;
+                lambda.Y += dlH;
+                x[t.A] = x0 + w0 * (dlD * d0 + dlH * g0);
+                x[t.B] = x1 + w1 * (dlD * d1 + dlH * g1);
+                x[t.C] = x2 + w2 * (dlD * d2 + dlH * g2);
+            }
+        }
+    }
+}

@@ -1,0 +1,133 @@
+using System;
+using System.Numerics;
+using Fulcrum.SoftBodies;
+using NUnit.Framework;
+
+namespace Fulcrum.Tests.SoftBodies
+{
+    public class CouplingTests
+    {
+        static BodyHandle DynamicBox(World world, Vector3 position, Vector3 halfExtents, float density)
+        {
+            BodyHandle box = world.CreateBody(BodyDef.Dynamic(position));
+            world.AddShape(box, ShapeDef.Of(ShapeGeometry.Box(halfExtents)) with { Density = density });
+            return box;
+        }
+
+        [Test]
+        public void Box_resting_on_jelly_stays_up_and_presses_it_down()
+        {
+            World world = SoftBodyScenes.WorldWithGround();
+            var material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 5e4f, 0.45f, 1000f);
+            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.5f, 0.2f, 0.5f), 5, 2, 5), material, new Vector3(0, 0.105f, 0));
+            def.Probes = new[] { new Vector3(0, 0.1f, 0) };
+            SoftBody jelly = world.GetSoftBody(world.CreateSoftBody(def));
+            // 0.2 m cube of 2000 kg/m^3: 16 kg on 0.04 m^2 of a 0.2 m layer of 5e4 Pa: about 2 cm of compression.
+            BodyHandle box = DynamicBox(world, new Vector3(0, 0.32f, 0), new Vector3(0.1f), 2000f);
+            for (int i = 0; i < 180; i++) world.Step(SoftBodyScenes.Dt);
+            float settled = world.GetBody(box).Position.Y;
+            for (int i = 0; i < 60; i++) world.Step(SoftBodyScenes.Dt);
+            BodyRef b = world.GetBody(box);
+            float top = jelly.GetProbe(0).Y;
+            TestContext.Out.WriteLine($"box centre {b.Position.Y:F4} m, speed {b.LinearVelocity.Length():F4} m/s, jelly top centre {top:F4} m (rest 0.21)");
+            Assert.That(b.Position.Y, Is.InRange(0.26f, 0.315f), "rests on the jelly, which gives a little");
+            Assert.That(b.Position.Y - settled, Is.EqualTo(0f).Within(0.002f), "at rest over the last second");
+            // The rigid stage applies the whole step's gravity before the soft stage pushes back
+            // over the substeps, so the end-of-step velocity of a body resting on a soft body
+            // reads g dt (n - 1) / (2 n) upward (0.074 m/s at 60 Hz, 10 substeps) while it stays put.
+            Assert.That(b.LinearVelocity.Length(), Is.LessThan(0.08f));
+            Assert.That(top, Is.LessThan(0.2f), "the jelly feels the box");
+            Assert.That(b.Position.Y - 0.1f, Is.EqualTo(top).Within(0.01f), "box bottom sits on the jelly top");
+        }
+
+        [Test]
+        public void Moving_jelly_pushes_a_free_box_and_momentum_is_conserved()
+        {
+            World world = SoftBodyScenes.ZeroGravityWorld();
+            var def = SoftBodyScenes.Cube(0.3f, 3, new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e5f, 0.4f, 1000f), new Vector3(-0.4f, 0, 0));
+            def.LinearVelocity = new Vector3(2f, 0, 0);
+            def.Friction = 0f;
+            SoftBody jelly = world.GetSoftBody(world.CreateSoftBody(def));
+            BodyHandle box = DynamicBox(world, new Vector3(0.1f, 0, 0), new Vector3(0.1f), 500f);
+            float boxMass = world.GetBody(box).Mass;
+            Vector3 before = jelly.ComputeStats().Momentum;
+            for (int i = 0; i < 60; i++) world.Step(SoftBodyScenes.Dt);
+            Vector3 after = jelly.ComputeStats().Momentum + boxMass * world.GetBody(box).LinearVelocity;
+            TestContext.Out.WriteLine($"box velocity {world.GetBody(box).LinearVelocity}, jelly momentum {jelly.ComputeStats().Momentum}, total before {before} after {after}");
+            Assert.That(world.GetBody(box).LinearVelocity.X, Is.GreaterThan(0.5f), "the box was pushed");
+            Assert.That((after - before).Length(), Is.LessThan(0.01f * before.Length()), "momentum");
+        }
+
+        [Test]
+        public void Vertices_attached_to_a_dynamic_body_hang_it_on_a_pinned_jelly()
+        {
+            // A jelly bar pinned to the world at its top, with a box attached to its bottom face:
+            // the box hangs still, and the jelly carries its weight.
+            var world = new World();
+            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.2f, 0.4f, 0.2f), 2, 4, 2), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 2e5f, 0.45f, 1000f), new Vector3(0, 1f, 0));
+            BodyHandle box = DynamicBox(world, new Vector3(0, 0.7f, 0), new Vector3(0.1f), 1000f);
+            def.Pins = new[]
+            {
+                SoftPin.ToWorld(new Vector3(-1, 0.2f, -1), new Vector3(1, 0.2f, 1)),
+                SoftPin.ToBody(new Vector3(-1, -0.2f, -1), new Vector3(1, -0.2f, 1), box),
+            };
+            SoftBody jelly = world.GetSoftBody(world.CreateSoftBody(def));
+            for (int i = 0; i < 180; i++) world.Step(SoftBodyScenes.Dt);
+            Vector3 settled = world.GetBody(box).Position;
+            for (int i = 0; i < 60; i++) world.Step(SoftBodyScenes.Dt);
+            BodyRef b = world.GetBody(box);
+            TestContext.Out.WriteLine($"box at {b.Position}, speed {b.LinearVelocity.Length():F4}");
+            Assert.That(b.Position.Y, Is.InRange(0.6f, 0.7f), "hangs, stretching the jelly a little");
+            Assert.That((b.Position - settled).Length(), Is.LessThan(0.002f), "at rest over the last second");
+            Assert.That(b.LinearVelocity.Length(), Is.LessThan(0.08f), "see the resting-box test for the end-of-step velocity");
+            // The six-tet split is not mirror symmetric, so the loaded bar leans a little.
+            Assert.That(MathF.Abs(b.Position.X) + MathF.Abs(b.Position.Z), Is.LessThan(0.03f));
+            Assert.That(jelly.ComputeStats().StrainEnergy, Is.GreaterThan(0f));
+        }
+
+        [Test]
+        public void Cloth_drapes_over_a_sphere_without_passing_through()
+        {
+            var world = new World();
+            BodyHandle ball = world.CreateBody(BodyDef.Static(Vector3.Zero));
+            world.AddShape(ball, ShapeDef.Of(ShapeGeometry.Sphere(0.3f)));
+            var def = SoftBodyDef.Of(SoftMesh.Cloth(1.2f, 1.2f, 24, 24), MaterialPresets.Cloth, new Vector3(0, 0.4f, 0));
+            def.Friction = 0.3f;
+            def.CollisionRadius = 0.01f;
+            def.Probes = new[] { Vector3.Zero, new Vector3(0.6f, 0, 0.6f) };
+            SoftBody cloth = world.GetSoftBody(world.CreateSoftBody(def));
+            for (int i = 0; i < 150; i++) world.Step(SoftBodyScenes.Dt);
+            float closest = float.MaxValue;
+            foreach (Vector3 p in cloth.Positions) closest = MathF.Min(closest, p.Length());
+            SoftBodyStats s = cloth.ComputeStats();
+            TestContext.Out.WriteLine($"centre {cloth.GetProbe(0)}, corner {cloth.GetProbe(1)}, closest to the ball centre {closest:F4} m, area ratio {s.VolumeRatio:F4} (min {s.MinJ:F3})");
+            Assert.That(SoftBodyScenes.AllFinite(cloth.Positions), Is.True);
+            Assert.That(closest, Is.GreaterThan(0.3f + 0.01f - 0.003f), "no vertex inside the ball");
+            Assert.That(cloth.GetProbe(0).Y, Is.EqualTo(0.31f).Within(0.01f), "the middle rests on top");
+            Assert.That(cloth.GetProbe(1).Y, Is.LessThan(0f), "the corners hang below the ball's centre");
+            Assert.That(s.VolumeRatio, Is.EqualTo(1f).Within(0.05f), "the cloth barely stretches");
+        }
+
+        [Test]
+        public void Vertices_collide_with_boxes_and_capsules_too()
+        {
+            var world = new World();
+            BodyHandle table = world.CreateBody(BodyDef.Static(new Vector3(0, 0, 0)));
+            world.AddShape(table, ShapeDef.Of(ShapeGeometry.Box(new Vector3(1f, 0.1f, 1f))));
+            BodyHandle rod = world.CreateBody(BodyDef.Static(new Vector3(0, 0.5f, 0)));
+            world.AddShape(rod, ShapeDef.Of(ShapeGeometry.Capsule(0.05f, 0.5f)) with { LocalPose = new Fulcrum.Mathematics.Pose(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI / 2)) });
+            var def = SoftBodyDef.Of(SoftMesh.Cloth(0.6f, 0.6f, 12, 12), MaterialPresets.Cloth, new Vector3(0, 0.7f, 0));
+            SoftBody cloth = world.GetSoftBody(world.CreateSoftBody(def));
+            for (int i = 0; i < 120; i++) world.Step(SoftBodyScenes.Dt);
+            float lowest = float.MaxValue, highest = float.MinValue;
+            foreach (Vector3 p in cloth.Positions)
+            {
+                lowest = MathF.Min(lowest, p.Y);
+                highest = MathF.Max(highest, p.Y);
+            }
+            TestContext.Out.WriteLine($"cloth y in [{lowest:F4}, {highest:F4}]");
+            Assert.That(lowest, Is.GreaterThan(0.1f), "stays on the table");
+            Assert.That(highest, Is.EqualTo(0.56f).Within(0.01f), "hangs over the rod (top at 0.55 + radius)");
+        }
+    }
+}
