@@ -355,6 +355,8 @@ namespace Fulcrum.Components
         {
             if (entity.GetComponent<Rigidbody>() != this)
                 throw new InvalidOperationException($"Entity '{name}' already has a Rigidbody: an entity carries at most one.");
+            if (entity.GetComponent<SoftBody>() != null)
+                throw new InvalidOperationException($"Entity '{name}' has a SoftBody: it cannot also carry a Rigidbody.");
         }
 
         internal override void Activate()
