@@ -181,6 +181,36 @@ namespace Fulcrum.Tests.Components
             Assert.That(bridge.IsRegistered(a), Is.False);
         }
 
+        sealed class PointCounter : IBridgeContactListener
+        {
+            public PhysicsBridge Bridge = null!;
+            public int Points = -1;
+            public Vector3 Normal;
+            public void OnContact(in BridgeContact c)
+            {
+                if (c.Kind != ContactEventKind.Begin || Points >= 0) return;
+                ReadOnlySpan<BridgeContactPoint> points = Bridge.GetPoints(c);
+                Points = points.Length;
+                Normal = points[0].Normal;
+            }
+        }
+
+        [Test]
+        public void Contact_events_from_the_world_carry_their_manifold_points()
+        {
+            WorldSettings ws = WorldSettings.Default;
+            PhysicsBridgeSettings s = PhysicsBridgeSettings.Default;
+            using var bridge = new PhysicsBridge(new World(ws), s);
+            var counter = new PointCounter { Bridge = bridge };
+            bridge.ContactListener = counter;
+            bridge.Register(new Thing("floor", new Vector3(0, -0.5f, 0)), BodyDef.Static(default), ShapeDef.Of(ShapeGeometry.Box(new Vector3(5, 0.5f, 5))), DriveMode.Game);
+            bridge.Register(new Thing("crate", new Vector3(0, 0.6f, 0)), BodyDef.Default, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.5f))));
+            for (int k = 0; k < 30 && counter.Points < 0; k++) bridge.Step(1f / 60f);
+            Assert.That(counter.Points, Is.EqualTo(4), "face on face");
+            Assert.That(MathF.Abs(counter.Normal.Y), Is.EqualTo(1f).Within(1e-5f));
+            Assert.Throws<InvalidOperationException>(() => bridge.GetPoints(default));
+        }
+
         [Test]
         public void Haptics_stream_carries_the_mean_contact_force_of_each_step()
         {

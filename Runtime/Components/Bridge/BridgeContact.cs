@@ -26,8 +26,12 @@ namespace Fulcrum.Components
         public Vector3 Normal;
         /// <summary>Average contact point, world, metres.</summary>
         public Vector3 Point;
-        /// <summary>Number of points in the contact manifold.</summary>
+        /// <summary>Number of points in the contact's manifolds (0 for triggers and end events).</summary>
         public int PointCount;
+        /// <summary>Where this event's points start in the batch's point buffer (read them with <see cref="PhysicsBridge.GetPoints"/>).</summary>
+        public int FirstPoint;
+        /// <summary>How many points the buffer holds for this event (0 when the world had no live contact to read them from).</summary>
+        public int StoredPoints;
         /// <summary>Sum of the normal impulses the solver applied in the step, N s (B received +Normal times this).</summary>
         public float NormalImpulse;
         /// <summary>Velocity of B relative to A at the contact before the solve, m/s.</summary>

@@ -23,6 +23,8 @@ namespace Fulcrum.Components
         long _stepsPublished;
         BridgeContact[] _outbox = new BridgeContact[64];
         int _outboxCount;
+        BridgeContactPoint[] _outboxPoints = new BridgeContactPoint[64];
+        int _outboxPointCount;
         Pose[] _sharedInput = new Pose[16];
         bool[] _sharedInputSet = new bool[16];
 
@@ -30,6 +32,7 @@ namespace Fulcrum.Components
         long _stepsDelivered;
         BridgeContact[] _inbox = new BridgeContact[64];
         int _inboxCount;
+        BridgeContactPoint[] _inboxPoints = new BridgeContactPoint[64];
         Pose[] _gPrev = new Pose[16], _gCur = new Pose[16];
         int[] _gPrevGen = new int[16], _gCurGen = new int[16];
 
@@ -103,12 +106,20 @@ namespace Fulcrum.Components
                 Swap(ref _snapCurGen, ref _snapBackGen);
                 _publishTicks = Stopwatch.GetTimestamp();
                 if (_outboxCount + _wEventCount > _outbox.Length) Array.Resize(ref _outbox, Math.Max(_outbox.Length * 2, _outboxCount + _wEventCount));
-                Array.Copy(_wEvents, 0, _outbox, _outboxCount, _wEventCount);
+                if (_outboxPointCount + _wPointCount > _outboxPoints.Length) Array.Resize(ref _outboxPoints, Math.Max(_outboxPoints.Length * 2, _outboxPointCount + _wPointCount));
+                for (int k = 0; k < _wEventCount; k++)
+                {
+                    _outbox[_outboxCount + k] = _wEvents[k];
+                    _outbox[_outboxCount + k].FirstPoint += _outboxPointCount; // rebased into the outbox's point buffer
+                }
+                Array.Copy(_wPoints, 0, _outboxPoints, _outboxPointCount, _wPointCount);
                 _outboxCount += _wEventCount;
+                _outboxPointCount += _wPointCount;
                 Interlocked.Increment(ref _stepsPublished);
             }
             Array.Clear(_wEvents, 0, _wEventCount);
             _wEventCount = 0;
+            _wPointCount = 0;
         }
 
         static void Swap<T>(ref T a, ref T b)
@@ -187,9 +198,14 @@ namespace Fulcrum.Components
                 _inbox = box;
                 _inboxCount = _outboxCount;
                 _outboxCount = 0;
+                BridgeContactPoint[] points = _outboxPoints;
+                _outboxPoints = _inboxPoints;
+                _inboxPoints = points;
+                _outboxPointCount = 0;
                 steps = _stepsPublished - _stepsDelivered;
                 _stepsDelivered = _stepsPublished;
             }
+            _deliveringPoints = _inboxPoints;
             Deliver(_inbox, _inboxCount);
             _inboxCount = 0;
             return (int)steps;

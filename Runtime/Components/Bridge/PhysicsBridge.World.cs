@@ -25,6 +25,8 @@ namespace Fulcrum.Components
         int _releaseAfterStepCount;
         BridgeContact[] _wEvents = new BridgeContact[64];
         int _wEventCount;
+        BridgeContactPoint[] _wPoints = new BridgeContactPoint[64];
+        int _wPointCount;
         ContactEvent[] _injected = new ContactEvent[16];
         int _injectedCount;
 
@@ -203,6 +205,8 @@ namespace Fulcrum.Components
             c.RelativeVelocity = e.RelativeVelocity;
             c.StepIndex = _world.StepIndex;
             c.Time = _world.Time;
+            c.FirstPoint = _wPointCount;
+            c.StoredPoints = e.Kind == ContactEventKind.End || e.IsSensor ? 0 : StorePoints(e);
             if (Haptics != null && !e.IsSensor && ((a >= 0 && _wHaptics[a]) || (b >= 0 && _wHaptics[b])))
             {
                 Haptics.Write(new ContactForceSample
@@ -218,6 +222,28 @@ namespace Fulcrum.Components
                     RelativeVelocity = e.RelativeVelocity,
                 });
             }
+        }
+
+        // Copies the points of the pair's manifolds after the event's; returns how many.
+        int StorePoints(in ContactEvent e)
+        {
+            if (!_world.IsValid(e.ShapeA) || !_world.IsValid(e.ShapeB)) return 0;
+            ContactGraph g = _world.ContactGraph;
+            int k = g.Find(e.ShapeA.Index, e.ShapeB.Index);
+            if (k < 0) return 0;
+            int n = 0;
+            for (int m = g.Contacts[k].FirstManifold; m >= 0; m = g.ManifoldNext[m])
+            {
+                ref ContactManifold mf = ref g.Manifolds[m];
+                for (int i = 0; i < mf.PointCount; i++)
+                {
+                    ref Fulcrum.Collision.ContactPoint p = ref ContactManifold.Point(ref mf, i);
+                    if (_wPointCount == _wPoints.Length) Array.Resize(ref _wPoints, _wPoints.Length * 2);
+                    _wPoints[_wPointCount++] = new BridgeContactPoint { Position = p.Position, Normal = mf.Normal, Separation = p.Separation, NormalImpulse = p.NormalImpulse };
+                    n++;
+                }
+            }
+            return n;
         }
 
         int ProxySlotOf(BodyHandle body)

@@ -286,8 +286,10 @@ namespace Fulcrum.Components
             for (int k = 0; k < steps; k++)
             {
                 StepWorld(_stepper.FixedDt, k, steps);
+                _deliveringPoints = _wPoints;
                 Deliver(_wEvents, _wEventCount);
                 _wEventCount = 0;
+                _wPointCount = 0;
                 ApplyCommands(_commands);
             }
             return steps;
@@ -418,5 +420,17 @@ namespace Fulcrum.Components
         }
 
         bool Removed(ProxyHandle p) => !p.IsNone && !IsRegistered(p);
+
+        BridgeContactPoint[] _deliveringPoints = Array.Empty<BridgeContactPoint>();
+
+        /// <summary>
+        /// The manifold points of <paramref name="contact"/>; valid only inside
+        /// <see cref="IBridgeContactListener.OnContact"/> (the buffer is reused afterwards).
+        /// </summary>
+        public ReadOnlySpan<BridgeContactPoint> GetPoints(in BridgeContact contact)
+        {
+            if (!_dispatching) throw new InvalidOperationException("PhysicsBridge.GetPoints is only valid inside a contact callback.");
+            return new ReadOnlySpan<BridgeContactPoint>(_deliveringPoints, contact.FirstPoint, contact.StoredPoints);
+        }
     }
 }
