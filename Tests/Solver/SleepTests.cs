@@ -87,5 +87,55 @@ namespace Fulcrum.Tests.Solver
             for (int n = 0; n < 120; n++) w.Step(Dt);
             Assert.That(w.AwakeBodyCount, Is.EqualTo(3));
         }
-    }
+    
+        [Test]
+        public void A_box_dropped_on_a_sleeping_stack_wakes_it_and_the_stack_sleeps_again()
+        {
+            var w = new World();
+            Ground(w);
+            BodyHandle[] stack = Tower(w, 3);
+            for (int n = 0; n < 90; n++) w.Step(Dt);
+            Assert.That(w.AwakeBodyCount, Is.EqualTo(0));
+            BodyHandle dropped = Box(w, new Vector3(0, 4f, 0), new Vector3(0.5f), 1f);
+            bool stackWoke = false;
+            for (int n = 0; n < 60; n++)
+            {
+                w.Step(Dt);
+                stackWoke |= w.GetBody(stack[0]).IsAwake;
+            }
+            Assert.That(stackWoke, Is.True);
+            for (int n = 0; n < 120; n++) w.Step(Dt);
+            Assert.That(w.AwakeBodyCount, Is.EqualTo(0));
+            Assert.That(w.GetBody(dropped).Position.Y, Is.EqualTo(3.5f).Within(0.05f));
+        }
+
+        [Test]
+        public void Removing_the_support_of_a_sleeping_stack_wakes_it_and_it_falls()
+        {
+            var w = new World();
+            Ground(w);
+            BodyHandle table = StaticBox(w, new Vector3(0, 2.5f, 0), new Vector3(1, 0.5f, 1));
+            BodyHandle[] stack = new BodyHandle[3];
+            for (int i = 0; i < 3; i++) stack[i] = Box(w, new Vector3(0, 3.5f + i, 0), new Vector3(0.5f), 1f);
+            for (int n = 0; n < 90; n++) w.Step(Dt);
+            Assert.That(w.AwakeBodyCount, Is.EqualTo(0));
+            w.DestroyBody(table);
+            Assert.That(w.AwakeBodyCount, Is.EqualTo(3));
+            for (int n = 0; n < 60; n++) w.Step(Dt);
+            Assert.That(w.GetBody(stack[2]).Position.Y, Is.LessThan(4f));
+        }
+
+        [Test]
+        public void Sleeping_bodies_cost_the_solver_nothing()
+        {
+            var w = new World();
+            Ground(w);
+            Pyramid(w, 10);
+            for (int n = 0; n < 240 && w.AwakeBodyCount > 0; n++) w.Step(Dt);
+            Assert.That(w.AwakeBodyCount, Is.EqualTo(0));
+            w.Step(Dt);
+            Assert.That(w.Contacts.ManifoldCount, Is.EqualTo(0));
+            Assert.That(w.LastStepProfile.Solve, Is.LessThan(0.05));
+        }
+}
 }

@@ -4,7 +4,7 @@ namespace Fulcrum.Dynamics
     /// Projected Gauss-Seidel with non-linear Gauss-Seidel position correction (the Box2D v2.x /
     /// Jolt scheme): integrate velocities, build the rows, warm start, Iterations velocity
     /// passes with no position bias (speculative contacts and limits only let gaps close),
-    /// restitution, integrate positions, then PositionIterations passes that move the bodies
+    /// integrate positions, restitution, then PositionIterations passes that move the bodies
     /// to remove a fraction of the remaining overlap and joint error. Because the position
     /// correction never touches velocities, it adds no energy: a deep overlap is undone
     /// without the body popping out.
@@ -23,9 +23,13 @@ namespace Fulcrum.Dynamics
             context.Prepare(islands);
             context.WarmStart();
             for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: false);
-            context.ApplyRestitution();
             context.StoreVelocities();
             Integrator.IntegratePositions(bodies, context.BodySlot, 1, context.BodyCount - 1, dt);
+            // Restitution once the bodies have reached each other (a speculative contact closes
+            // during the position update), as TGS does after its substeps.
+            context.LoadVelocities();
+            context.ApplyRestitution();
+            context.StoreVelocities();
             if (s.PositionIterations > 0)
             {
                 context.LoadDeltas();

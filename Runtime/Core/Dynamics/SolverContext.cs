@@ -150,6 +150,7 @@ namespace Fulcrum.Dynamics
             float contactHertz = MathF.Min(set.ContactHertz, Softness.MaxStableHertz(_h));
             _contactSoftness = Softness.Make(contactHertz, set.ContactDampingRatio, _h);
             _fixedSoftness = Softness.Make(MathF.Min(2f * contactHertz, Softness.MaxStableHertz(_h)), set.ContactDampingRatio, _h);
+
             _jointParameters = new JointSolver.StepParameters
             {
                 Joint = Softness.Make(MathF.Min(set.JointHertz, Softness.MaxStableHertz(_h)), set.JointDampingRatio, _h),
@@ -332,6 +333,20 @@ namespace Fulcrum.Dynamics
                 int i = BodySlot[k];
                 s.LinearVelocity[i] = body.LinearVelocity;
                 s.AngularVelocity[i] = body.AngularVelocity;
+            }
+        }
+
+        /// <summary>Copies the dynamic bodies' velocities into the solver bodies (after the integrator turned them, PGS).</summary>
+        public void LoadVelocities()
+        {
+            BodyStorage s = _storage;
+            for (int k = 1; k < BodyCount; k++)
+            {
+                ref SolverBody body = ref Bodies[k];
+                if (body.IsDynamic == 0) continue;
+                int i = BodySlot[k];
+                body.LinearVelocity = s.LinearVelocity[i];
+                body.AngularVelocity = s.AngularVelocity[i];
             }
         }
 

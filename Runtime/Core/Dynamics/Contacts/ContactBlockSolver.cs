@@ -117,8 +117,16 @@ namespace Fulcrum.Dynamics
             float d1 = x1 - a1, d2 = x2 - a2;
             p1.Normal.Impulse = x1;
             p2.Normal.Impulse = x2;
-            p1.MaxNormalImpulse = MathF.Max(p1.MaxNormalImpulse, x1);
-            p2.MaxNormalImpulse = MathF.Max(p2.MaxNormalImpulse, x2);
+            if (x1 > p1.MaxNormalImpulse)
+            {
+                ContactSolver.RecordImpact(ref p1, vn1);
+                p1.MaxNormalImpulse = x1;
+            }
+            if (x2 > p2.MaxNormalImpulse)
+            {
+                ContactSolver.RecordImpact(ref p2, vn2);
+                p2.MaxNormalImpulse = x2;
+            }
             Vector3 p = (d1 + d2) * n;
             vA -= mA * p;
             vB += mB * p;

@@ -5,8 +5,10 @@ namespace Fulcrum.Dynamics
     /// <summary>
     /// The solver's view of one contact manifold: the two solver bodies, the shared frame
     /// (normal from A to B and two tangents), the combined material, the softness of its
-    /// normal rows and the range of its points in the point array. Built at the start of every
-    /// step from the collision stage's manifold, written back to it at the end.
+    /// normal rows, the range of its points in the point array, and its friction: two tangent
+    /// rows at the centroid of the points and a twist row about the normal (patch friction).
+    /// Built at the start of every step from the collision stage's manifold, written back to
+    /// it at the end.
     /// </summary>
     internal struct ContactConstraint
     {
@@ -32,6 +34,14 @@ namespace Fulcrum.Dynamics
         public float Restitution;
         /// <summary>Rolling resistance: the largest rolling torque per newton of normal force, m.</summary>
         public float RollingFriction;
+        /// <summary>Friction along the first tangent at the centroid of the points.</summary>
+        public ContactRow Friction1;
+        /// <summary>Friction along the second tangent at the centroid.</summary>
+        public ContactRow Friction2;
+        /// <summary>Twist friction about the normal: effective mass and accumulated impulse (N m s).</summary>
+        public float TwistMass, TwistImpulse;
+        /// <summary>Mean distance of the points from their centroid, m: the lever arm of twist friction.</summary>
+        public float TwistRadius;
         /// <summary>Accumulated rolling impulses about the two tangents, N m s.</summary>
         public float RollingImpulse1, RollingImpulse2;
         /// <summary>Effective masses of the rolling rows.</summary>

@@ -10,6 +10,15 @@ namespace Fulcrum.Dynamics
     /// Gauss-Seidel pass (normal rows, then friction bounded by the normal impulse just
     /// computed, then rolling resistance), restitution and the write-back of impulses.
     /// <para>
+    /// Friction acts on the manifold as a whole (patch friction, as in PhysX and Bepu): two
+    /// tangent rows at the centroid of the points, their impulse kept inside the circle
+    /// mu * (sum of the normal impulses), and a twist row about the normal bounded by
+    /// mu * (sum of normal impulses) * (mean distance of the points from the centroid). A face
+    /// contact is statically indeterminate (four normal rows, three degrees of freedom), so
+    /// its normal impulses may settle unevenly; per-point friction would then turn a sliding
+    /// box about the normal, while patch friction does not depend on how the load is shared.
+    /// </para>
+    /// <para>
     /// The separation of each point is carried through the step from the bodies' motion:
     /// s = s0 + n.(dpB - dpA) + dthetaB.(rB x n) - dthetaA.(rA x n), the first-order change of the
     /// gap for displacements dp and small rotations dtheta, so substeps see contacts close or
@@ -48,22 +57,43 @@ namespace Fulcrum.Dynamics
             c.Softness = a.IsDynamic == 0 || b.IsDynamic == 0 ? fixedSoftness : contactSoftness;
 
             Vector3 vA = a.LinearVelocity, wA = a.AngularVelocity, vB = b.LinearVelocity, wB = b.AngularVelocity;
+            Vector3 centroidA = Vector3.Zero, centroidB = Vector3.Zero;
+            float friction1 = 0, friction2 = 0;
             for (int i = 0; i < m.PointCount; i++)
             {
                 ref ContactPoint mp = ref ContactManifold.Point(ref m, i);
                 ref ContactConstraintPoint p = ref points[firstPoint + i];
                 p.Normal.Setup(mp.AnchorA, mp.AnchorB, n, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
-                p.Tangent1.Setup(mp.AnchorA, mp.AnchorB, c.Tangent1, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
-                p.Tangent2.Setup(mp.AnchorA, mp.AnchorB, c.Tangent2, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
                 p.Normal.Impulse = warmScale * mp.NormalImpulse;
-                p.Tangent1.Impulse = warmScale * mp.TangentImpulse1;
-                p.Tangent2.Impulse = warmScale * mp.TangentImpulse2;
+                friction1 += mp.TangentImpulse1;
+                friction2 += mp.TangentImpulse2;
+                centroidA += mp.AnchorA;
+                centroidB += mp.AnchorB;
                 p.Separation = mp.Separation;
                 p.RelativeVelocity = p.Normal.Velocity(n, vA, wA, vB, wB);
                 mp.RelativeNormalVelocity = p.RelativeVelocity;
                 p.MaxNormalImpulse = 0;
                 p.ManifoldPoint = i;
             }
+
+            // Patch friction at the centroid; the twist arm is the points' mean distance from it.
+            float inv = 1f / m.PointCount;
+            centroidA *= inv;
+            centroidB *= inv;
+            c.Friction1.Setup(centroidA, centroidB, c.Tangent1, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
+            c.Friction2.Setup(centroidA, centroidB, c.Tangent2, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
+            c.Friction1.Impulse = warmScale * friction1;
+            c.Friction2.Impulse = warmScale * friction2;
+            float radius = 0;
+            for (int i = 0; i < m.PointCount; i++)
+            {
+                Vector3 d = ContactManifold.Point(ref m, i).AnchorA - centroidA;
+                radius += (d - Vector3.Dot(d, n) * n).Length();
+            }
+            c.TwistRadius = radius * inv;
+            c.TwistMass = c.TwistRadius > 0 ? AngularMass(n, a.InverseInertia, b.InverseInertia) : 0;
+            // The manifold's rolling impulse carries the twist impulse in its normal component.
+            c.TwistImpulse = c.TwistRadius > 0 ? warmScale * Vector3.Dot(m.RollingImpulse, n) : 0;
 
             c.RollingFriction = m.RollingFriction;
             c.RollingImpulse1 = c.RollingImpulse2 = 0;
@@ -95,20 +125,23 @@ namespace Fulcrum.Dynamics
         {
             ref SolverBody a = ref bodies[c.BodyA];
             ref SolverBody b = ref bodies[c.BodyB];
-            Vector3 linear = Vector3.Zero, angularA = Vector3.Zero, angularB = Vector3.Zero;
+            float l1 = c.Friction1.Impulse, l2 = c.Friction2.Impulse, normalSum = 0;
+            Vector3 angularA = l1 * c.Friction1.VelocityA + l2 * c.Friction2.VelocityA;
+            Vector3 angularB = l1 * c.Friction1.VelocityB + l2 * c.Friction2.VelocityB;
             for (int k = c.FirstPoint, end = c.FirstPoint + c.PointCount; k < end; k++)
             {
                 ref ContactConstraintPoint p = ref points[k];
-                float ln = p.Normal.Impulse, l1 = p.Tangent1.Impulse, l2 = p.Tangent2.Impulse;
-                linear += ln * c.Normal + l1 * c.Tangent1 + l2 * c.Tangent2;
-                angularA += ln * p.Normal.VelocityA + l1 * p.Tangent1.VelocityA + l2 * p.Tangent2.VelocityA;
-                angularB += ln * p.Normal.VelocityB + l1 * p.Tangent1.VelocityB + l2 * p.Tangent2.VelocityB;
+                float ln = p.Normal.Impulse;
+                normalSum += ln;
+                angularA += ln * p.Normal.VelocityA;
+                angularB += ln * p.Normal.VelocityB;
             }
-            if (c.RollingFriction > 0)
+            Vector3 linear = normalSum * c.Normal + l1 * c.Tangent1 + l2 * c.Tangent2;
+            Vector3 spin = c.TwistImpulse * c.Normal + c.RollingImpulse1 * c.Tangent1 + c.RollingImpulse2 * c.Tangent2;
+            if (spin != Vector3.Zero)
             {
-                Vector3 r = c.RollingImpulse1 * c.Tangent1 + c.RollingImpulse2 * c.Tangent2;
-                angularA += a.InverseInertia * r;
-                angularB += b.InverseInertia * r;
+                angularA += a.InverseInertia * spin;
+                angularB += b.InverseInertia * spin;
             }
             if (a.IsDynamic != 0)
             {
@@ -164,32 +197,42 @@ namespace Fulcrum.Dynamics
 
             float mu = c.Friction;
             float totalNormal = 0;
+            for (int k = first; k < end; k++) totalNormal += points[k].Normal.Impulse;
             Vector3 t1 = c.Tangent1, t2 = c.Tangent2;
-            for (int k = first; k < end; k++)
             {
-                ref ContactConstraintPoint p = ref points[k];
-                totalNormal += p.Normal.Impulse;
-                float maxFriction = mu * p.Normal.Impulse;
-                float old1 = p.Tangent1.Impulse, old2 = p.Tangent2.Impulse;
-                float new1 = old1 - p.Tangent1.EffectiveMass * p.Tangent1.Velocity(t1, vA, wA, vB, wB);
-                float new2 = old2 - p.Tangent2.EffectiveMass * p.Tangent2.Velocity(t2, vA, wA, vB, wB);
+                float maxFriction = mu * totalNormal;
+                float old1 = c.Friction1.Impulse, old2 = c.Friction2.Impulse;
+                float new1 = old1 - c.Friction1.EffectiveMass * c.Friction1.Velocity(t1, vA, wA, vB, wB);
+                float new2 = old2 - c.Friction2.EffectiveMass * c.Friction2.Velocity(t2, vA, wA, vB, wB);
                 // Coulomb's cone is round: clamp the friction impulse's length, not each axis,
                 // so a body sliding diagonally feels the same friction as one sliding along t1.
                 float len2 = new1 * new1 + new2 * new2;
                 if (len2 > maxFriction * maxFriction)
                 {
-                    float s = maxFriction / MathF.Sqrt(len2);
-                    new1 *= s;
-                    new2 *= s;
+                    float scale = maxFriction / MathF.Sqrt(len2);
+                    new1 *= scale;
+                    new2 *= scale;
                 }
-                p.Tangent1.Impulse = new1;
-                p.Tangent2.Impulse = new2;
+                c.Friction1.Impulse = new1;
+                c.Friction2.Impulse = new2;
                 float d1 = new1 - old1, d2 = new2 - old2;
                 Vector3 impulse = d1 * t1 + d2 * t2;
                 vA -= mA * impulse;
-                wA -= d1 * p.Tangent1.VelocityA + d2 * p.Tangent2.VelocityA;
+                wA -= d1 * c.Friction1.VelocityA + d2 * c.Friction2.VelocityA;
                 vB += mB * impulse;
-                wB += d1 * p.Tangent1.VelocityB + d2 * p.Tangent2.VelocityB;
+                wB += d1 * c.Friction1.VelocityB + d2 * c.Friction2.VelocityB;
+            }
+            if (c.TwistMass > 0)
+            {
+                // Twist friction: spinning about the normal is resisted by the friction of the
+                // patch at its mean radius.
+                float maxTwist = mu * totalNormal * c.TwistRadius;
+                float old = c.TwistImpulse;
+                float total = Math.Clamp(old - c.TwistMass * Vector3.Dot(n, wB - wA), -maxTwist, maxTwist);
+                c.TwistImpulse = total;
+                Vector3 l = (total - old) * n;
+                wA -= a.InverseInertia * l;
+                wB += b.InverseInertia * l;
             }
 
             if (c.RollingFriction > 0)
@@ -264,7 +307,11 @@ namespace Fulcrum.Dynamics
             float total = MathF.Max(old + impulse, 0f);
             impulse = total - old;
             p.Normal.Impulse = total;
-            if (total > p.MaxNormalImpulse) p.MaxNormalImpulse = total;
+            if (total > p.MaxNormalImpulse)
+            {
+                RecordImpact(ref p, vn);
+                p.MaxNormalImpulse = total;
+            }
             Vector3 P = impulse * n;
             vA -= mA * P;
             wA -= impulse * p.Normal.VelocityA;
@@ -287,10 +334,23 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>
+        /// The approach speed restitution answers: the relative normal velocity just before the
+        /// point first carried an impulse in this step. A body that reaches the surface in the
+        /// middle of a step (a speculative contact closing) has gained speed since the step
+        /// began; its speed in the substep where it lands is the impact speed to a substep's
+        /// gravity (the step-start value would lose up to e g dt of bounce). A point warm
+        /// started under load records its (resting) velocity at once.
+        /// </summary>
+        internal static void RecordImpact(ref ContactConstraintPoint p, float vn)
+        {
+            if (p.MaxNormalImpulse == 0) p.RelativeVelocity = vn;
+        }
+
+        /// <summary>
         /// Restitution after the solve (Box2D v3): points that approached faster than
-        /// <paramref name="threshold"/> before the solve and carried an impulse get the
-        /// separating velocity -e v0, from the relative velocity before the solve; slower
-        /// contacts (resting ones) are left alone, so resting bodies never bounce.
+        /// <paramref name="threshold"/> and carried an impulse get the separating velocity
+        /// -e v0, v0 the approach speed of <see cref="RecordImpact"/>; slower contacts (resting
+        /// ones) are left alone, so resting bodies never bounce.
         /// </summary>
         public static void ApplyRestitution(ref ContactConstraint c, ContactConstraintPoint[] points, SolverBody[] bodies, float threshold)
         {
@@ -332,21 +392,24 @@ namespace Fulcrum.Dynamics
         /// <summary>
         /// Writes the accumulated impulses back into the manifold for the next step's warm
         /// start, scaled by <paramref name="scale"/> (substeps per step: the manifold holds
-        /// impulses per step).
+        /// impulses per step). <see cref="ContactManifold.RollingImpulse"/> carries the twist
+        /// friction impulse along the normal and the rolling impulses along the tangents.
         /// </summary>
         public static void Store(in ContactConstraint c, ContactConstraintPoint[] points, ref ContactManifold m, float scale)
         {
+            // The patch friction impulse is shared out evenly over the points (the contract keeps
+            // friction per point); the next step sums it back.
+            float share = scale / c.PointCount;
             for (int k = c.FirstPoint, end = c.FirstPoint + c.PointCount; k < end; k++)
             {
                 ref ContactConstraintPoint p = ref points[k];
                 ref ContactPoint mp = ref ContactManifold.Point(ref m, p.ManifoldPoint);
                 mp.NormalImpulse = scale * p.Normal.Impulse;
-                mp.TangentImpulse1 = scale * p.Tangent1.Impulse;
-                mp.TangentImpulse2 = scale * p.Tangent2.Impulse;
+                mp.TangentImpulse1 = share * c.Friction1.Impulse;
+                mp.TangentImpulse2 = share * c.Friction2.Impulse;
+                mp.RelativeNormalVelocity = p.RelativeVelocity;
             }
-            m.RollingImpulse = c.RollingFriction > 0
-                ? scale * (c.RollingImpulse1 * c.Tangent1 + c.RollingImpulse2 * c.Tangent2)
-                : Vector3.Zero;
+            m.RollingImpulse = scale * (c.TwistImpulse * c.Normal + c.RollingImpulse1 * c.Tangent1 + c.RollingImpulse2 * c.Tangent2);
         }
     }
 }

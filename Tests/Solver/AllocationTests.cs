@@ -1,0 +1,49 @@
+using System;
+using System.Numerics;
+using Fulcrum;
+using NUnit.Framework;
+using static Fulcrum.Tests.Solver.SolverTestScenes;
+
+namespace Fulcrum.Tests.Solver
+{
+    public class AllocationTests
+    {
+        [TestCase(SolverType.Tgs, false)]
+        [TestCase(SolverType.Tgs, true)]
+        [TestCase(SolverType.Pgs, true)]
+        public void A_warm_step_with_contacts_and_every_joint_kind_allocates_nothing(SolverType solver, bool block)
+        {
+            WorldSettings s = Settings(solver);
+            s.BlockSolver = block;
+            s.EnableSleeping = false;
+            var w = new World(s);
+            Ground(w);
+            Tower(w, 5);
+            BodyHandle a = Box(w, new Vector3(4, 3, 0), new Vector3(0.2f), 1f);
+            BodyHandle b = Box(w, new Vector3(5, 3, 0), new Vector3(0.2f), 1f);
+            BodyHandle c = Sphere(w, new Vector3(6, 3, 0), 0.2f, 1f);
+            w.CreateJoint(JointDef.Ball(BodyHandle.None, a, new Vector3(4, 4, 0), new Vector3(0, 1, 0)));
+            JointDef hinge = JointDef.Hinge(a, b, new Vector3(0.5f, 0, 0), new Vector3(-0.5f, 0, 0), Vector3.UnitZ, Vector3.UnitZ);
+            hinge.LowerDeg = -45; hinge.UpperDeg = 45; hinge.MaxMotorTorque = 1; hinge.MotorSpeed = 1; hinge.StiffnessHz = 1;
+            w.CreateJoint(hinge);
+            w.CreateJoint(JointDef.Distance(b, c, Vector3.Zero, Vector3.Zero, 0.5f, 1.5f));
+            JointDef slider = JointDef.Prismatic(BodyHandle.None, c, new Vector3(6, 3, 0), Vector3.Zero, Vector3.UnitY);
+            slider.Lower = -1; slider.Upper = 1; slider.MaxMotorForce = 5;
+            BodyHandle d = Box(w, new Vector3(8, 3, 0), new Vector3(0.2f), 1f);
+            w.CreateJoint(slider);
+            w.CreateJoint(JointDef.ConeTwist(BodyHandle.None, d, new Vector3(8, 4, 0), new Vector3(0, 1, 0), -Vector3.UnitY, -Vector3.UnitY, 30, 20));
+            BodyHandle e = Box(w, new Vector3(10, 3, 0), new Vector3(0.2f), 1f);
+            w.CreateJoint(JointDef.Fixed(BodyHandle.None, e, new Vector3(10, 3, 0), Vector3.Zero));
+            for (int n = 0; n < 60; n++) w.Step(1f / 60f);
+            // Summed per step, so that nothing but Step is inside the measurement.
+            long allocated = 0;
+            for (int n = 0; n < 120; n++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                w.Step(1f / 60f);
+                allocated += GC.GetAllocatedBytesForCurrentThread() - before;
+            }
+            Assert.That(allocated, Is.EqualTo(0));
+        }
+    }
+}
