@@ -160,12 +160,14 @@ namespace Fulcrum
             }
             ct.Flags |= ContactFlags.Updated;
 
-            Pose poseA = ShapeWorldPose(shapeA), poseB = ShapeWorldPose(shapeB);
             bool sensor = (ct.Flags & ContactFlags.Sensor) != 0;
             ContactBuffer buffer = _contactBuffer;
             float speculative = sensor ? 0 : SpeculativeBase + MotionBound(shapeA, shapeB, dt);
             buffer.Clear(speculative);
-            CollisionTable.Collide(Shapes.Geometry[shapeA], poseA, Shapes.Geometry[shapeB], poseB, buffer);
+            // Tight bounds farther apart than the speculative distance: no point can come out.
+            if (Shapes.WorldAabb[shapeA].Expanded(speculative).Overlaps(Shapes.WorldAabb[shapeB]))
+                CollisionTable.Collide(Shapes.Geometry[shapeA], ShapeWorldPose(shapeA), Shapes.Geometry[shapeB], ShapeWorldPose(shapeB), buffer);
+            else if (ct.FirstManifold < 0) return true;
             if (sensor)
             {
                 if (buffer.PointCount > 0) ct.Flags |= ContactFlags.Overlapping;
