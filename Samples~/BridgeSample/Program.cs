@@ -50,7 +50,9 @@ namespace BridgeSample
             {
                 bridge.Register(floor, BodyDef.Static(default), ShapeDef.Of(ShapeGeometry.Box(new Vector3(10, 0.5f, 10))), DriveMode.Game);
                 bridge.Register(paddle, BodyDef.Default, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.25f, 0.5f, 1))), DriveMode.Game);
-                ProxyHandle b = bridge.Register(ball, BodyDef.Default, ShapeDef.Of(ShapeGeometry.Sphere(0.5f)));
+                BodyDef ballDef = BodyDef.Default;
+                ballDef.Mass = 1f;
+                ProxyHandle b = bridge.Register(ball, ballDef, ShapeDef.Of(ShapeGeometry.Sphere(0.5f)));
                 if (!threaded) bridge.SetHaptics(b, true);
 
                 Console.WriteLine(threaded ? "bridge with a 120 Hz physics thread under a 60 Hz loop" : "bridge stepping at 120 Hz inside a 60 Hz loop");

@@ -72,5 +72,39 @@ namespace Fulcrum.Tests.Components
                 for (int i = 0; i < c.contactCount; i++) MaxSeparation = System.MathF.Max(MaxSeparation, c.GetContact(i).separation);
             }
         }
+
+        [Test]
+        public void A_ball_that_falls_bounces_and_rests_gets_Enter_once_per_landing_Stay_while_touching_and_Exit_on_each_bounce()
+        {
+            var scene = new PhysicsScene(WorldSettings.Default, 1f / 60f);
+            var bouncy = new PhysicsMaterial("bouncy") { bounciness = 0.7f, bounceCombine = CombineMode.Maximum };
+            Entity ground = scene.CreateEntity("Ground", new Vector3(0, -0.5f, 0));
+            ground.AddComponent<BoxCollider>().size = new Vector3(10, 1, 10);
+            Entity ball = scene.CreateEntity("Ball", new Vector3(0, 2, 0));
+            var rb = ball.AddComponent<Rigidbody>();
+            var sphere = ball.AddComponent<SphereCollider>();
+            sphere.radius = 0.25f;
+            sphere.sharedMaterial = bouncy;
+            var log = ball.AddComponent<Recorder>();
+            for (int k = 0; k < 300; k++) scene.Tick(1f / 60f); // 5 s
+
+            List<string> m = log.Log.FindAll(x => x.StartsWith("OnCollision"));
+            int enters = m.FindAll(x => x == "OnCollisionEnter").Count;
+            int exits = m.FindAll(x => x == "OnCollisionExit").Count;
+            Assert.That(exits, Is.GreaterThanOrEqualTo(2), "it bounced at least twice");
+            Assert.That(enters, Is.EqualTo(exits + 1), "every landing but the last ends in a bounce");
+            // Enter, Stay*, Exit alternate strictly: no Stay or Exit without a contact, no double Enter.
+            bool touching = false;
+            foreach (string x in m)
+            {
+                if (x == "OnCollisionEnter") { Assert.That(touching, Is.False, "Enter while touching"); touching = true; }
+                else Assert.That(touching, Is.True, x + " without a contact");
+                if (x == "OnCollisionExit") touching = false;
+            }
+            Assert.That(touching, Is.True, "at rest on the ground");
+            Assert.That(m[m.Count - 1], Is.EqualTo("OnCollisionStay"));
+            Assert.That(rb.position.Y, Is.EqualTo(0.25f).Within(0.01f));
+            Assert.That(rb.linearVelocity.Length(), Is.LessThan(0.05f));
+        }
     }
 }
