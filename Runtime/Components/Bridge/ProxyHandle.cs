@@ -1,0 +1,45 @@
+using System;
+
+namespace Fulcrum.Components
+{
+    /// <summary>
+    /// Identifies an entity registered with a <see cref="PhysicsBridge"/>: a slot and its
+    /// generation, so a handle of an unregistered entity goes stale instead of naming the next
+    /// one. <c>default</c> is "none".
+    /// </summary>
+    public readonly struct ProxyHandle : IEquatable<ProxyHandle>
+    {
+        /// <summary>The slot in the bridge's tables.</summary>
+        public readonly int Index;
+        /// <summary>The generation of the slot when the handle was issued; 0 means none.</summary>
+        public readonly int Generation;
+
+        /// <summary>Builds a handle (the bridge issues them).</summary>
+        public ProxyHandle(int index, int generation)
+        {
+            Index = index;
+            Generation = generation;
+        }
+
+        /// <summary>True for the "none" handle.</summary>
+        public bool IsNone => Generation == 0;
+
+        /// <inheritdoc/>
+        public bool Equals(ProxyHandle other) => Index == other.Index && Generation == other.Generation;
+
+        /// <inheritdoc/>
+        public override bool Equals(object? obj) => obj is ProxyHandle h && Equals(h);
+
+        /// <inheritdoc/>
+        public override int GetHashCode() => (Index * 397) ^ Generation;
+
+        /// <summary>Same slot and generation.</summary>
+        public static bool operator ==(ProxyHandle a, ProxyHandle b) => a.Equals(b);
+
+        /// <summary>Different slot or generation.</summary>
+        public static bool operator !=(ProxyHandle a, ProxyHandle b) => !a.Equals(b);
+
+        /// <inheritdoc/>
+        public override string ToString() => IsNone ? "ProxyHandle(none)" : $"ProxyHandle({Index}:{Generation})";
+    }
+}

@@ -1,0 +1,31 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Components
+{
+    /// <summary>
+    /// Input checks that name the component (or entity) and the field, and build their message
+    /// only when the check fails: the checks run on every AddForce and transform write, which
+    /// must not allocate.
+    /// </summary>
+    internal static class FieldCheck
+    {
+        /// <summary>Throws "owner: field must be finite" unless every component of <paramref name="v"/> is finite.</summary>
+        public static void Finite(Vector3 v, object owner, string field)
+        {
+            if (!Validate.IsFinite(v)) throw new ArgumentException($"{owner}: {field} must be finite, got {v}.", field);
+        }
+
+        /// <summary>Returns <paramref name="q"/> normalised, or throws "owner: field must be a finite non-zero quaternion".</summary>
+        public static Quaternion Rotation(Quaternion q, object owner, string field)
+        {
+            if (Validate.IsFinite(q))
+            {
+                float length = q.Length();
+                if (length > 1e-6f) return Quaternion.Multiply(q, 1f / length);
+            }
+            throw new ArgumentException($"{owner}: {field} must be a finite non-zero quaternion, got {q}.", field);
+        }
+    }
+}

@@ -1,0 +1,20 @@
+#nullable enable
+using UnityEngine;
+using F = Fulcrum.Components;
+
+namespace Fulcrum.Unity
+{
+    /// <summary>Unity face of <see cref="F.SphereCollider"/>.</summary>
+    public sealed class FulcrumSphereCollider : FulcrumCollider
+    {
+        [Tooltip("Radius, metres (> 0).")] public float radius = 0.5f;
+
+        /// <inheritdoc/>
+        protected override F.Collider Create(F.Entity shadow)
+        {
+            var c = shadow.AddComponent<F.SphereCollider>();
+            c.radius = radius;
+            return c;
+        }
+    }
+}
