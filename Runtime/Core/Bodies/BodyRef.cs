@@ -199,7 +199,11 @@ namespace Fulcrum
         public bool Ccd
         {
             get => B.Ccd[_slot];
-            set => Writable.Ccd[_slot] = value;
+            set
+            {
+                _ = Writable;
+                _world.SetCcd(_slot, value);
+            }
         }
 
         /// <summary>Whether the body may fall asleep.</summary>

@@ -8,7 +8,9 @@ namespace Fulcrum.Dynamics
     /// Semi-implicit (symplectic) Euler for rigid bodies: velocities first from forces, then
     /// positions from the new velocities. Rotation uses a splitting of the free rigid body
     /// that conserves angular momentum exactly, so gyroscopic effects (the intermediate-axis
-    /// flip of a spinning box) appear without energy or momentum drift.
+    /// flip of a spinning box) appear without energy or momentum drift. Bodies free of
+    /// constraints, and every body under <see cref="PgsSolver"/>, are integrated here;
+    /// <see cref="TgsSolver"/> integrates its bodies per substep itself.
     /// </summary>
     public static class Integrator
     {
@@ -16,22 +18,33 @@ namespace Fulcrum.Dynamics
         /// v += dt (g s + F/m), w += dt I^-1 tau, then damping v /= (1 + c dt): the implicit
         /// (Pade) form of exponential decay, stable for any c dt.
         /// </summary>
-        internal static void IntegrateVelocities(BodyStorage b, Vector3 gravity, float dt, float maxSpeed)
+        internal static void IntegrateVelocities(BodyStorage b, Vector3 gravity, float dt, float maxSpeed) =>
+            IntegrateVelocities(b, b.Active, 0, b.ActiveCount, gravity, dt, maxSpeed);
+
+        /// <summary>As above, for the body slots <paramref name="slots"/>[start .. start + count).</summary>
+        internal static void IntegrateVelocities(BodyStorage b, int[] slots, int start, int count, Vector3 gravity, float dt, float maxSpeed)
         {
-            int[] active = b.Active;
-            for (int k = 0; k < b.ActiveCount; k++)
+            for (int k = start, end = start + count; k < end; k++)
             {
-                int i = active[k];
+                int i = slots[k];
                 if (b.Type[i] != BodyType.Dynamic || !b.Awake[i]) continue;
-                Vector3 v = b.LinearVelocity[i] + dt * (gravity * b.GravityScale[i] + b.Force[i] * b.InverseMass[i]);
-                Vector3 w = b.AngularVelocity[i] + dt * (b.InverseInertiaWorld[i] * b.Torque[i]);
-                if (b.LinearDamping[i] > 0) v *= 1f / (1f + dt * b.LinearDamping[i]);
-                if (b.AngularDamping[i] > 0) w *= 1f / (1f + dt * b.AngularDamping[i]);
-                float speed2 = v.LengthSquared();
-                if (speed2 > maxSpeed * maxSpeed) v *= maxSpeed / MathF.Sqrt(speed2);
+                Vector3 v = b.LinearVelocity[i];
+                Vector3 w = b.AngularVelocity[i];
+                IntegrateVelocity(b, i, gravity, dt, maxSpeed, ref v, ref w);
                 b.LinearVelocity[i] = v;
                 b.AngularVelocity[i] = w;
             }
+        }
+
+        /// <summary>One body's velocity update (shared with the substeps of <see cref="TgsSolver"/>).</summary>
+        internal static void IntegrateVelocity(BodyStorage b, int i, Vector3 gravity, float dt, float maxSpeed, ref Vector3 v, ref Vector3 w)
+        {
+            v += dt * (gravity * b.GravityScale[i] + b.Force[i] * b.InverseMass[i]);
+            w += dt * (b.InverseInertiaWorld[i] * b.Torque[i]);
+            if (b.LinearDamping[i] > 0) v *= 1f / (1f + dt * b.LinearDamping[i]);
+            if (b.AngularDamping[i] > 0) w *= 1f / (1f + dt * b.AngularDamping[i]);
+            float speed2 = v.LengthSquared();
+            if (speed2 > maxSpeed * maxSpeed) v *= maxSpeed / MathF.Sqrt(speed2);
         }
 
         /// <summary>
@@ -39,12 +52,14 @@ namespace Fulcrum.Dynamics
         /// the angular velocity) advances by <see cref="RotateFreeBody"/>. Kinematic bodies
         /// rotate at constant angular velocity. Refreshes origin and world inertia.
         /// </summary>
-        internal static void IntegratePositions(BodyStorage b, float dt)
+        internal static void IntegratePositions(BodyStorage b, float dt) => IntegratePositions(b, b.Active, 0, b.ActiveCount, dt);
+
+        /// <summary>As above, for the body slots <paramref name="slots"/>[start .. start + count).</summary>
+        internal static void IntegratePositions(BodyStorage b, int[] slots, int start, int count, float dt)
         {
-            int[] active = b.Active;
-            for (int k = 0; k < b.ActiveCount; k++)
+            for (int k = start, end = start + count; k < end; k++)
             {
-                int i = active[k];
+                int i = slots[k];
                 BodyType type = b.Type[i];
                 if (type == BodyType.Static || !b.Awake[i]) continue;
                 b.Center[i] += b.LinearVelocity[i] * dt;

@@ -61,6 +61,7 @@ namespace Fulcrum
         {
             ThrowIfInStep();
             int i = Slot(body);
+            OnBodyDestroyed(i);
             int s = Bodies.FirstShape[i];
             while (s >= 0)
             {
@@ -281,6 +282,7 @@ namespace Fulcrum
             if (Bodies.Type[i] == BodyType.Static) return;
             Bodies.Awake[i] = true;
             Bodies.SleepTime[i] = 0;
+            WakeIsland(i);
         }
 
         /// <summary>

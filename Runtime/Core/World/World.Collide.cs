@@ -1,30 +1,326 @@
+using System;
+using System.Numerics;
+using Fulcrum.Collision;
+using Fulcrum.Mathematics;
+
 namespace Fulcrum
 {
     public sealed partial class World
     {
-        // Collision stages. Until the broad and narrow phases exist these keep the shapes'
-        // world bounds current and find no contacts.
+        // Collision state. The margin policy is written down in CollisionMargins.
+        internal readonly BroadPhase BroadPhase = new BroadPhase();
+        internal readonly ContactGraph ContactGraph = new ContactGraph();
+        /// <summary>This step's manifolds for the solver (see <see cref="ContactSet"/>).</summary>
+        internal readonly ContactSet Contacts = new ContactSet();
+        readonly ContactBuffer _contactBuffer = new ContactBuffer();
+        readonly ContactPointCache _pointCache = new ContactPointCache();
+        ulong[] _sortKeys = new ulong[64];
+        int[] _sortItems = new int[64];
+        bool _anyWoken;
 
-        void OnShapeAdded(int shape) { }
+        float SpeculativeBase => CollisionMargins.SpeculativeDistance(_settings.LinearSlop);
 
-        void OnShapeRemoved(int shape) { }
+        void OnShapeAdded(int shape)
+        {
+            ContactGraph.EnsureShapeCapacity(Shapes.SlotCount);
+            int b = Shapes.Body[shape];
+            bool isStatic = Bodies.Type[b] == BodyType.Static;
+            Aabb fat = Shapes.WorldAabb[shape].Expanded(CollisionMargins.AabbMargin + SpeculativeBase);
+            Shapes.ProxyId[shape] = BroadPhase.CreateProxy(fat, shape, isStatic);
+            OnCcdShapeAdded(b);
+        }
 
-        void UpdateBroadPhase()
+        void OnShapeRemoved(int shape)
+        {
+            int edge = ContactGraph.FirstEdge(shape);
+            while (edge >= 0)
+            {
+                int next = ContactGraph.NextEdge(edge);
+                int c = edge >> 1;
+                if ((ContactGraph.Contacts[c].Flags & ContactFlags.Touching) != 0)
+                    RecordRemovalEnd(c);
+                ContactGraph.Destroy(c);
+                edge = next;
+            }
+            BroadPhase.DestroyProxy(Shapes.ProxyId[shape]);
+            Shapes.ProxyId[shape] = -1;
+            OnCcdShapeRemoved(Shapes.Body[shape]);
+        }
+
+        // Refreshes the bounds of awake moving shapes, swept over their predicted motion in
+        // this step, moves the proxies whose swept bounds left their fat boxes (or whose fat
+        // boxes became far too loose), then finds the new pairs.
+        void UpdateBroadPhase(float dt)
         {
             ShapeStorage s = Shapes;
+            BodyStorage b = Bodies;
+            float grow = SpeculativeBase;
             for (int k = 0; k < s.ActiveCount; k++)
             {
                 int i = s.Active[k];
-                int b = s.Body[i];
-                if (Bodies.Type[b] == BodyType.Static || !Bodies.Awake[b]) continue;
-                s.WorldAabb[i] = s.Geometry[i].ComputeAabb(ShapeWorldPose(i));
+                int body = s.Body[i];
+                if (b.Type[body] == BodyType.Static || !b.Awake[body]) continue;
+                Aabb tight = s.Geometry[i].ComputeAabb(ShapeWorldPose(i));
+                s.WorldAabb[i] = tight;
+                float angular = b.AngularVelocity[body].Length() * dt * Reach(tight, b.Center[body]);
+                Aabb swept = tight.Expanded(grow + angular);
+                Vector3 move = b.LinearVelocity[body] * dt;
+                swept = new Aabb(swept.Min + Vector3.Min(move, Vector3.Zero), swept.Max + Vector3.Max(move, Vector3.Zero));
+                RefitProxy(s.ProxyId[i], swept);
+            }
+            BroadPhase.UpdatePairs(this);
+        }
+
+        void RefitProxy(int proxy, in Aabb swept)
+        {
+            ref readonly Aabb fat = ref BroadPhase.FatAabb(proxy);
+            Aabb wanted = swept.Expanded(CollisionMargins.AabbMargin);
+            // A fat box four times the area it needs came from a fast phase that ended.
+            if (!fat.Contains(swept) || fat.SurfaceArea > 4f * wanted.SurfaceArea)
+                BroadPhase.MoveProxy(proxy, wanted);
+        }
+
+        // The farthest a shape's bounds reach from its body's centre of mass.
+        static float Reach(in Aabb box, Vector3 center) => Vector3.Distance(box.Center, center) + box.Extents.Length();
+
+        /// <summary>
+        /// The pair filter: called by the broad phase for each new overlap of fat boxes.
+        /// Creates a contact when the shapes are on different bodies, at least one of which is
+        /// dynamic (or, for a sensor, not static), their layers accept each other, a pair
+        /// function exists and the pair is not known yet.
+        /// </summary>
+        internal void AddPair(int shapeA, int shapeB)
+        {
+            ShapeStorage s = Shapes;
+            int bodyA = s.Body[shapeA], bodyB = s.Body[shapeB];
+            if (bodyA == bodyB) return;
+            bool sensor = s.IsSensor[shapeA] || s.IsSensor[shapeB];
+            BodyType ta = Bodies.Type[bodyA], tb = Bodies.Type[bodyB];
+            if (sensor ? ta == BodyType.Static && tb == BodyType.Static : ta != BodyType.Dynamic && tb != BodyType.Dynamic) return;
+            if ((s.CollidesWith[shapeA] & (1u << s.Layer[shapeB])) == 0 || (s.CollidesWith[shapeB] & (1u << s.Layer[shapeA])) == 0) return;
+            ShapeType ka = s.Geometry[shapeA].Type, kb = s.Geometry[shapeB].Type;
+            if (!CollisionTable.Has(ka, kb)) return;
+            if (ContactGraph.Find(shapeA, shapeB) >= 0) return;
+            // Shape A has the lower type (the table's order), ties broken by slot.
+            if (kb < ka || (kb == ka && shapeB < shapeA))
+            {
+                (shapeA, shapeB) = (shapeB, shapeA);
+                (bodyA, bodyB) = (bodyB, bodyA);
+            }
+            ContactGraph.Create(shapeA, shapeB, bodyA, bodyB, sensor);
+        }
+
+        // Runs the pair functions of every contact with an awake body, carries impulses over
+        // by feature id, wakes sleeping bodies that an awake one touches, and lists the
+        // manifolds for the solver in shape-pair order.
+        void UpdateContacts(float dt)
+        {
+            Contacts.Clear();
+            _anyWoken = false;
+            ContactGraph g = ContactGraph;
+            int k = 0;
+            while (k < g.DenseCount)
+            {
+                int c = g.Dense[k];
+                if (UpdateContact(c, dt)) k++;
+            }
+            // Bodies woken by a contact: their pairs with other sleepers were skipped above.
+            while (_anyWoken)
+            {
+                _anyWoken = false;
+                k = 0;
+                while (k < g.DenseCount)
+                {
+                    int c = g.Dense[k];
+                    ref Contact ct = ref g.Contacts[c];
+                    bool pending = (ct.Flags & ContactFlags.Updated) == 0 && (Bodies.Awake[ct.BodyA] || Bodies.Awake[ct.BodyB]);
+                    if (!pending || UpdateContact(c, dt)) k++;
+                }
+            }
+            GatherManifolds();
+        }
+
+        // Returns false when the contact was destroyed (its dense slot now holds another).
+        bool UpdateContact(int c, float dt)
+        {
+            ContactGraph g = ContactGraph;
+            ref Contact ct = ref g.Contacts[c];
+            ct.Flags &= ~(ContactFlags.Updated | ContactFlags.Overlapping);
+            int bodyA = ct.BodyA, bodyB = ct.BodyB;
+            bool awakeA = Bodies.Awake[bodyA], awakeB = Bodies.Awake[bodyB];
+            if (!awakeA && !awakeB) return true;
+
+            int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
+            if (!BroadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(BroadPhase.FatAabb(Shapes.ProxyId[shapeB])))
+            {
+                if ((ct.Flags & ContactFlags.Touching) != 0) RecordStepEnd(c);
+                g.Destroy(c);
+                return false;
+            }
+            ct.Flags |= ContactFlags.Updated;
+
+            Pose poseA = ShapeWorldPose(shapeA), poseB = ShapeWorldPose(shapeB);
+            bool sensor = (ct.Flags & ContactFlags.Sensor) != 0;
+            ContactBuffer buffer = _contactBuffer;
+            float speculative = sensor ? 0 : SpeculativeBase + MotionBound(shapeA, shapeB, dt);
+            buffer.Clear(speculative);
+            CollisionTable.Collide(Shapes.Geometry[shapeA], poseA, Shapes.Geometry[shapeB], poseB, buffer);
+            if (sensor)
+            {
+                if (buffer.PointCount > 0) ct.Flags |= ContactFlags.Overlapping;
+                return true;
+            }
+            buffer.Reduce();
+            WriteManifolds(ref ct, buffer);
+
+            if (ct.ManifoldCount > 0)
+            {
+                if (!awakeA && Bodies.Type[bodyA] == BodyType.Dynamic) { Wake(bodyA); _anyWoken = true; }
+                if (!awakeB && Bodies.Type[bodyB] == BodyType.Dynamic) { Wake(bodyB); _anyWoken = true; }
+            }
+            return true;
+        }
+
+        // How far the two shapes can approach each other in the step: relative linear motion
+        // plus each body's rotation swinging its farthest point.
+        float MotionBound(int shapeA, int shapeB, float dt)
+        {
+            int a = Shapes.Body[shapeA], b = Shapes.Body[shapeB];
+            BodyStorage s = Bodies;
+            Vector3 va = s.Awake[a] ? s.LinearVelocity[a] : Vector3.Zero;
+            Vector3 vb = s.Awake[b] ? s.LinearVelocity[b] : Vector3.Zero;
+            float bound = (va - vb).Length();
+            if (s.Awake[a]) bound += s.AngularVelocity[a].Length() * Reach(Shapes.WorldAabb[shapeA], s.Center[a]);
+            if (s.Awake[b]) bound += s.AngularVelocity[b].Length() * Reach(Shapes.WorldAabb[shapeB], s.Center[b]);
+            return bound * dt;
+        }
+
+        // Rewrites a contact's manifold chain from the buffer; points whose feature id
+        // existed last step inherit its accumulated impulses (warm starting).
+        void WriteManifolds(ref Contact ct, ContactBuffer buffer)
+        {
+            ContactGraph g = ContactGraph;
+            ContactPointCache cache = _pointCache;
+            cache.Capture(g, ct.FirstManifold);
+
+            // Resize the chain to the number of patches.
+            int patches = Math.Min(buffer.PatchCount, ContactGraph.MaxManifoldsPerPair);
+            int first = ct.FirstManifold;
+            if (patches == 0) { g.FreeManifolds(ref ct); return; }
+            if (first < 0) first = ct.FirstManifold = g.AllocateManifold();
+            int m = first;
+            for (int p = 1; p < patches; p++)
+            {
+                if (g.ManifoldNext[m] < 0) g.ManifoldNext[m] = g.AllocateManifold();
+                m = g.ManifoldNext[m];
+            }
+            if (g.ManifoldNext[m] >= 0)
+            {
+                var tail = new Contact { FirstManifold = g.ManifoldNext[m] };
+                g.FreeManifolds(ref tail);
+                g.ManifoldNext[m] = -1;
+            }
+            ct.ManifoldCount = patches;
+
+            ShapeStorage s = Shapes;
+            int sa = ct.ShapeA, sb = ct.ShapeB;
+            float friction = Combine.Values(s.Friction[sa], s.FrictionCombine[sa], s.Friction[sb], s.FrictionCombine[sb]);
+            float restitution = Combine.Values(s.Restitution[sa], s.RestitutionCombine[sa], s.Restitution[sb], s.RestitutionCombine[sb]);
+            Vector3 centerA = Bodies.Center[ct.BodyA], centerB = Bodies.Center[ct.BodyB];
+            Vector3 sum = Vector3.Zero;
+            int total = 0;
+            m = first;
+            for (int p = 0; p < patches; p++, m = g.ManifoldNext[m])
+            {
+                ref ContactManifold mf = ref g.Manifolds[m];
+                int start = buffer.PatchStart[p], count = buffer.PatchPointCount(p);
+                mf.BodyA = ct.BodyA;
+                mf.BodyB = ct.BodyB;
+                mf.ShapeA = sa;
+                mf.ShapeB = sb;
+                mf.Normal = buffer.PatchNormal[p];
+                mf.PointCount = count;
+                mf.Friction = friction;
+                mf.Restitution = restitution;
+                mf.RollingFriction = 0;
+                mf.RollingImpulse = cache.RollingImpulse(p);
+                for (int i = 0; i < count; i++)
+                {
+                    ref ContactPoint cp = ref ContactManifold.Point(ref mf, i);
+                    Vector3 x = buffer.Position[start + i];
+                    cp.Position = x;
+                    cp.AnchorA = x - centerA;
+                    cp.AnchorB = x - centerB;
+                    cp.Separation = buffer.Separation[start + i];
+                    cp.FeatureId = buffer.Id[start + i];
+                    cp.RelativeNormalVelocity = 0;
+                    cp.Persisted = cache.TryTake(cp.FeatureId, out cp.NormalImpulse, out cp.TangentImpulse1, out cp.TangentImpulse2);
+                    sum += x;
+                    total++;
+                }
+            }
+            if (total > 0)
+            {
+                Vector3 at = sum / total;
+                ct.RelativeVelocity = PointVelocity(ct.BodyB, at) - PointVelocity(ct.BodyA, at);
             }
         }
 
-        void UpdateContacts() { }
+        Vector3 PointVelocity(int body, Vector3 at) =>
+            Bodies.LinearVelocity[body] + Vector3.Cross(Bodies.AngularVelocity[body], at - Bodies.Center[body]);
 
-        void SolveContinuous(float dt) { }
+        // Lists the manifolds of this step's updated, non-sensor contacts for the solver,
+        // ordered by shape pair, and measures penetration and contact count.
+        void GatherManifolds()
+        {
+            ContactGraph g = ContactGraph;
+            int n = 0;
+            for (int k = 0; k < g.DenseCount; k++)
+            {
+                int c = g.Dense[k];
+                ref Contact ct = ref g.Contacts[c];
+                if ((ct.Flags & (ContactFlags.Updated | ContactFlags.Sensor)) != ContactFlags.Updated || ct.ManifoldCount == 0) continue;
+                if (n == _sortKeys.Length)
+                {
+                    Array.Resize(ref _sortKeys, 2 * n);
+                    Array.Resize(ref _sortItems, 2 * n);
+                }
+                _sortKeys[n] = ct.Key;
+                _sortItems[n] = c;
+                n++;
+            }
+            if (n > 1) Array.Sort(_sortKeys, _sortItems, 0, n);
 
-        void PublishEvents() { }
+            float slop = _settings.LinearSlop;
+            float maxPenetration = 0;
+            int touching = 0;
+            for (int k = 0; k < n; k++)
+            {
+                ref Contact ct = ref g.Contacts[_sortItems[k]];
+                for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
+                {
+                    ref ContactManifold mf = ref g.Manifolds[m];
+                    for (int i = 0; i < mf.PointCount; i++)
+                    {
+                        float sep = ContactManifold.Point(ref mf, i).Separation;
+                        if (sep <= slop) touching++;
+                        if (-sep > maxPenetration) maxPenetration = -sep;
+                    }
+                    Contacts.Add(mf, m);
+                }
+            }
+            StatContactCount = touching;
+            if (maxPenetration > StatMaxPenetration) StatMaxPenetration = maxPenetration;
+        }
+
+        // The solver wrote this step's impulses into the contact set; hand them back to the
+        // persistent manifolds so the next step can warm start from them.
+        void CopyImpulsesBack()
+        {
+            ContactSet set = Contacts;
+            ContactManifold[] pool = ContactGraph.Manifolds;
+            for (int k = 0; k < set.ManifoldCount; k++)
+                pool[set.Source[k]] = set.Manifolds[k];
+        }
     }
 }

@@ -1,18 +1,91 @@
+using System;
+using Fulcrum.Collision;
 using Fulcrum.Dynamics;
 
 namespace Fulcrum
 {
     public sealed partial class World
     {
-        void BuildIslands() { }
+        readonly IslandBuilder _islands = new IslandBuilder();
+        readonly SolverContext _solverContext = new SolverContext();
+        readonly PgsSolver _pgs = new PgsSolver();
+        readonly TgsSolver _tgs = new TgsSolver();
+        int[] _freeBodies = Array.Empty<int>();
 
-        // Semi-implicit Euler: velocities from forces, then positions from the new velocities.
-        void Solve(float dt)
+        // Until the narrow phase fills a contact set, tests hand the solver manifolds here:
+        // the callback runs at the start of the islands stage and fills TestManifolds.
+        internal ContactManifold[] TestManifolds = Array.Empty<ContactManifold>();
+        internal int TestManifoldCount;
+        internal Action<World>? TestNarrowPhase;
+
+        /// <summary>The manifolds of this step as the collision stage left them.</summary>
+        ContactManifold[] StepManifolds(out int count)
         {
-            Integrator.IntegrateVelocities(Bodies, _settings.Gravity, dt, _settings.MaxLinearSpeed);
-            Integrator.IntegratePositions(Bodies, dt);
+            count = TestManifoldCount;
+            return TestManifolds;
         }
 
-        void UpdateSleep(float dt) { }
+        // Islands stage: wake what awake bodies touch, list the step's constraints, union-find.
+        void BuildIslands()
+        {
+            _jointBreakCount = 0;
+            TestNarrowPhase?.Invoke(this);
+            ContactManifold[] manifolds = StepManifolds(out int count);
+            Joints.EnsureBodies(Bodies.SlotCount);
+            _islands.Build(Bodies, Shapes, manifolds, count, Joints);
+        }
+
+        // Bodies in no constraint take the plain integrator step; the others go to the solver
+        // the settings name (PGS or TGS).
+        void Solve(float dt)
+        {
+            IConstraintSolver solver = _settings.Solver == SolverType.Pgs ? _pgs : (IConstraintSolver)_tgs;
+            bool constrained = _islands.ManifoldCount > 0 || _islands.JointCount > 0;
+            if (constrained)
+            {
+                ContactManifold[] manifolds = StepManifolds(out _);
+                _solverContext.Begin(Bodies, Joints, manifolds, _islands, _settings, dt, solver.SubstepCount(_settings));
+            }
+
+            int free = 0;
+            if (_freeBodies.Length < _islands.AwakeCount) _freeBodies = new int[Math.Max(16, 2 * _islands.AwakeCount)];
+            for (int k = 0; k < _islands.AwakeCount; k++)
+            {
+                int i = _islands.AwakeBodies[k];
+                if (!constrained || _solverContext.IndexOf(i) == 0) _freeBodies[free++] = i;
+            }
+            Integrator.IntegrateVelocities(Bodies, _freeBodies, 0, free, _settings.Gravity, dt, _settings.MaxLinearSpeed);
+            Integrator.IntegratePositions(Bodies, _freeBodies, 0, free, dt);
+
+            if (!constrained) return;
+            StatMaxJointError = MathF.Max(StatMaxJointError, solver.Step(_solverContext, _islands, dt));
+            CollectBrokenJoints();
+        }
+
+        // Sleep half of the last stage: rest timers, then resting islands fall asleep.
+        void UpdateSleep(float dt)
+        {
+            ContactManifold[] manifolds = StepManifolds(out _);
+            _islands.UpdateSleep(Bodies, manifolds, Joints, _settings, dt);
+        }
+
+        /// <summary>Wakes the sleeping island of body <paramref name="slot"/>, if it sleeps in one.</summary>
+        void WakeIsland(int slot) => _islands.WakeIsland(Bodies, slot);
+
+        // A removed body may have held others up: wake everything that touched it, and take its
+        // joints with it. Runs before its shapes (and so its contacts) are released.
+        void OnBodyDestroyed(int slot)
+        {
+            WakeIsland(slot);
+            ContactManifold[] manifolds = StepManifolds(out int count);
+            for (int k = 0; k < count; k++)
+            {
+                ref ContactManifold m = ref manifolds[k];
+                if (m.PointCount == 0) continue;
+                if (m.BodyA == slot && m.BodyB >= 0) Wake(m.BodyB);
+                else if (m.BodyB == slot && m.BodyA >= 0) Wake(m.BodyA);
+            }
+            DestroyJointsOf(slot);
+        }
     }
 }

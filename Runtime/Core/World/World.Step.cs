@@ -27,9 +27,9 @@ namespace Fulcrum
                 ResetStatistics();
                 BeginStep(dt);
 
-                UpdateBroadPhase();
+                UpdateBroadPhase(dt);
                 t = Mark(StepStage.BroadPhase, t);
-                UpdateContacts();
+                UpdateContacts(dt);
                 t = Mark(StepStage.NarrowPhase, t);
                 BuildIslands();
                 t = Mark(StepStage.Islands, t);

@@ -20,8 +20,17 @@ namespace Fulcrum
         public int Iterations;
         /// <summary>Substeps per step (TGS; PGS ignores it). &gt;= 1. Default: 4.</summary>
         public int Substeps;
-        /// <summary>Position iterations of PGS (split-impulse / NGS correction). &gt;= 0. Default: 2.</summary>
+        /// <summary>
+        /// Position iterations of PGS: non-linear Gauss-Seidel passes that move bodies to remove
+        /// overlap beyond <see cref="LinearSlop"/> and joint error (a fraction 0.2 per pass, at most
+        /// <see cref="MaxContactPushSpeed"/> x dt), without touching velocities. TGS ignores it. &gt;= 0. Default: 2.
+        /// </summary>
         public int PositionIterations;
+        /// <summary>
+        /// Relax passes per TGS substep: unbiased passes after the position update that take out
+        /// the velocity the soft bias added (so pushing out adds no energy). PGS ignores it. &gt;= 0. Default: 1.
+        /// </summary>
+        public int RelaxIterations;
         /// <summary>Reuse last step's impulses as the starting guess. Default: true.</summary>
         public bool WarmStarting;
         /// <summary>Solve the normal rows of a 2-4 point manifold together (block solver). Default: false.</summary>
@@ -38,10 +47,20 @@ namespace Fulcrum
         public int Threads;
         /// <summary>Bit-identical results for any thread count (fixed orders, no racy sums). Default: true.</summary>
         public bool Deterministic;
-        /// <summary>Contact stiffness of the soft contact constraint, Hz. Default: 30 Hz.</summary>
+        /// <summary>
+        /// Contact stiffness of the soft contact constraint (TGS), Hz; clamped to a quarter of the
+        /// substep rate, and doubled against static and kinematic bodies. Default: 30 Hz.
+        /// </summary>
         public float ContactHertz;
         /// <summary>Damping ratio of the soft contact constraint (1 = critical). Default: 10.</summary>
         public float ContactDampingRatio;
+        /// <summary>
+        /// Stiffness of joint rows (TGS), Hz; clamped to a quarter of the substep rate, where the
+        /// soft step stays stable. Default: 60 Hz.
+        /// </summary>
+        public float JointHertz;
+        /// <summary>Damping ratio of joint rows (TGS). Default: 5.</summary>
+        public float JointDampingRatio;
         /// <summary>The fastest the solver may push overlapping bodies apart, m/s. Default: 3 m/s.</summary>
         public float MaxContactPushSpeed;
         /// <summary>Penetration allowed without correction, m. Default: 0.005 m.</summary>
@@ -59,6 +78,7 @@ namespace Fulcrum
             Iterations = 4,
             Substeps = 4,
             PositionIterations = 2,
+            RelaxIterations = 1,
             WarmStarting = true,
             BlockSolver = false,
             EnableSleeping = true,
@@ -69,6 +89,8 @@ namespace Fulcrum
             Deterministic = true,
             ContactHertz = 30f,
             ContactDampingRatio = 10f,
+            JointHertz = 60f,
+            JointDampingRatio = 5f,
             MaxContactPushSpeed = 3f,
             LinearSlop = 0.005f,
             RestitutionThreshold = 1f,
@@ -84,12 +106,15 @@ namespace Fulcrum
             if (Iterations < 1) throw new ArgumentException($"settings.Iterations must be >= 1, got {Iterations}.", nameof(Iterations));
             if (Substeps < 1) throw new ArgumentException($"settings.Substeps must be >= 1, got {Substeps}.", nameof(Substeps));
             if (PositionIterations < 0) throw new ArgumentException($"settings.PositionIterations must be >= 0, got {PositionIterations}.", nameof(PositionIterations));
+            if (RelaxIterations < 0) throw new ArgumentException($"settings.RelaxIterations must be >= 0, got {RelaxIterations}.", nameof(RelaxIterations));
             if (Threads < 1) throw new ArgumentException($"settings.Threads must be >= 1, got {Threads}.", nameof(Threads));
             Mathematics.Validate.Positive(TimeToSleep, "settings.TimeToSleep");
             Mathematics.Validate.NonNegative(SleepLinearVelocity, "settings.SleepLinearVelocity");
             Mathematics.Validate.NonNegative(SleepAngularVelocity, "settings.SleepAngularVelocity");
             Mathematics.Validate.Positive(ContactHertz, "settings.ContactHertz");
             Mathematics.Validate.NonNegative(ContactDampingRatio, "settings.ContactDampingRatio");
+            Mathematics.Validate.Positive(JointHertz, "settings.JointHertz");
+            Mathematics.Validate.NonNegative(JointDampingRatio, "settings.JointDampingRatio");
             Mathematics.Validate.Positive(MaxContactPushSpeed, "settings.MaxContactPushSpeed");
             Mathematics.Validate.NonNegative(LinearSlop, "settings.LinearSlop");
             Mathematics.Validate.NonNegative(RestitutionThreshold, "settings.RestitutionThreshold");

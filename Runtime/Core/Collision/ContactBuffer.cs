@@ -1,0 +1,112 @@
+using System;
+using System.Numerics;
+
+namespace Fulcrum.Collision
+{
+    /// <summary>
+    /// What a pair function writes: one or more patches (a normal from shape A to shape B
+    /// and its candidate points: world position midway between the surfaces, separation along
+    /// the normal, feature id). Points farther apart than <see cref="Speculative"/> are dropped
+    /// on entry. A convex pair makes one patch; a shape against a mesh may make several.
+    /// <see cref="Reduce"/> then keeps at most four points per patch. Reused every call: one
+    /// per world, no allocation once grown.
+    /// </summary>
+    internal sealed class ContactBuffer
+    {
+        /// <summary>The most patches a buffer holds.</summary>
+        public const int MaxPatches = 16;
+
+        public Vector3[] Position = new Vector3[64];
+        public float[] Separation = new float[64];
+        public uint[] Id = new uint[64];
+        public int PointCount;
+
+        public Vector3[] PatchNormal = new Vector3[MaxPatches];
+        public int[] PatchStart = new int[MaxPatches + 1];
+        public int PatchCount;
+
+        /// <summary>The largest separation a point may have and still be kept, metres.</summary>
+        public float Speculative;
+
+        /// <summary>Empties the buffer for a new pair.</summary>
+        public void Clear(float speculative)
+        {
+            PointCount = 0;
+            PatchCount = 0;
+            PatchStart[0] = 0;
+            Speculative = speculative;
+        }
+
+        /// <summary>Starts a patch with a unit normal from A to B; later points belong to it.</summary>
+        public void BeginPatch(Vector3 normal)
+        {
+            // An empty previous patch is replaced rather than kept.
+            if (PatchCount > 0 && PatchStart[PatchCount - 1] == PointCount) PatchCount--;
+            if (PatchCount == MaxPatches) PatchCount--; // callers merge patches well before this
+            PatchNormal[PatchCount] = normal;
+            PatchStart[PatchCount] = PointCount;
+            PatchCount++;
+            PatchStart[PatchCount] = PointCount;
+        }
+
+        /// <summary>Adds a point to the current patch when its separation is within <see cref="Speculative"/>.</summary>
+        public void Add(Vector3 position, float separation, uint id)
+        {
+            if (!(separation <= Speculative)) return;
+            if (PointCount == Position.Length)
+            {
+                Array.Resize(ref Position, 2 * Position.Length);
+                Array.Resize(ref Separation, 2 * Separation.Length);
+                Array.Resize(ref Id, 2 * Id.Length);
+            }
+            Position[PointCount] = position;
+            Separation[PointCount] = separation;
+            Id[PointCount] = id;
+            PointCount++;
+            PatchStart[PatchCount] = PointCount;
+        }
+
+        /// <summary>Points in patch <paramref name="p"/>.</summary>
+        public int PatchPointCount(int p) => PatchStart[p + 1] - PatchStart[p];
+
+        /// <summary>Turns every normal around (after a pair function ran with A and B swapped).</summary>
+        public void FlipNormals()
+        {
+            for (int p = 0; p < PatchCount; p++) PatchNormal[p] = -PatchNormal[p];
+        }
+
+        /// <summary>The smallest separation in the buffer (+infinity when empty).</summary>
+        public float MinSeparation()
+        {
+            float s = float.PositiveInfinity;
+            for (int i = 0; i < PointCount; i++) s = MathF.Min(s, Separation[i]);
+            return s;
+        }
+
+        /// <summary>Drops empty patches and reduces every patch to at most four points.</summary>
+        public void Reduce()
+        {
+            int write = 0, writePatch = 0;
+            for (int p = 0; p < PatchCount; p++)
+            {
+                int start = PatchStart[p], count = PatchStart[p + 1] - start;
+                if (count == 0) continue;
+                if (count > ContactManifold.MaxPoints)
+                    count = ManifoldReduction.Reduce(Position, Separation, Id, start, count, PatchNormal[p]);
+                for (int i = 0; i < count; i++)
+                {
+                    Position[write + i] = Position[start + i];
+                    Separation[write + i] = Separation[start + i];
+                    Id[write + i] = Id[start + i];
+                }
+                PatchNormal[writePatch] = PatchNormal[p];
+                PatchStart[writePatch] = write;
+                write += count;
+                writePatch++;
+            }
+            PatchCount = writePatch;
+            PointCount = write;
+            PatchStart[writePatch] = write;
+        }
+    }
+}

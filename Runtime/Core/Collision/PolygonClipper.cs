@@ -1,0 +1,75 @@
+using System;
+using System.Numerics;
+
+namespace Fulcrum.Collision
+{
+    /// <summary>
+    /// Sutherland-Hodgman clipping of an incident face polygon against the side planes of a
+    /// reference face, tracking for every output vertex a key that names the features that
+    /// made it, so the same contact point gets the same key next step:
+    /// an incident vertex k keeps key k; a crossing of segment s with side plane p gets
+    /// <c>0x8000 | s &lt;&lt; 8 | p</c>, where s is the incident edge it lies on (0..127) or
+    /// 128 + the side plane it runs along (for a segment created by an earlier cut).
+    /// Each vertex also carries the code of the segment leaving it.
+    /// </summary>
+    internal static class PolygonClipper
+    {
+        /// <summary>The most vertices a clipped polygon may have (incident face plus side planes).</summary>
+        public const int MaxVertices = 64;
+
+        /// <summary>
+        /// Clips <paramref name="points"/>[0, count) in place against planes
+        /// dot(n_p, x) &lt;= d_p; returns the new count. Keys start as vertex indices and
+        /// segment codes as edge indices (set by the caller).
+        /// </summary>
+        public static int Clip(Span<Vector3> points, Span<uint> keys, Span<uint> segments, int count,
+            ReadOnlySpan<Vector3> planeNormals, ReadOnlySpan<float> planeOffsets,
+            Span<Vector3> scratchPoints, Span<uint> scratchKeys, Span<uint> scratchSegments)
+        {
+            for (int p = 0; p < planeNormals.Length && count > 0; p++)
+            {
+                int n = ClipOne(points, keys, segments, count, planeNormals[p], planeOffsets[p], (uint)p,
+                    scratchPoints, scratchKeys, scratchSegments);
+                scratchPoints.Slice(0, n).CopyTo(points);
+                scratchKeys.Slice(0, n).CopyTo(keys);
+                scratchSegments.Slice(0, n).CopyTo(segments);
+                count = n;
+            }
+            return count;
+        }
+
+        static int ClipOne(ReadOnlySpan<Vector3> pts, ReadOnlySpan<uint> keys, ReadOnlySpan<uint> segs, int count,
+            Vector3 normal, float offset, uint plane,
+            Span<Vector3> outPts, Span<uint> outKeys, Span<uint> outSegs)
+        {
+            int written = 0;
+            int limit = outPts.Length;
+            for (int k = 0; k < count; k++)
+            {
+                int next = k + 1 == count ? 0 : k + 1;
+                Vector3 cur = pts[k], nxt = pts[next];
+                float dc = Vector3.Dot(normal, cur) - offset;
+                float dn = Vector3.Dot(normal, nxt) - offset;
+                bool curIn = dc <= 0, nextIn = dn <= 0;
+                if (curIn && written < limit)
+                {
+                    outPts[written] = cur;
+                    outKeys[written] = keys[k];
+                    outSegs[written] = segs[k];
+                    written++;
+                }
+                if (curIn != nextIn && written < limit)
+                {
+                    float t = dc / (dc - dn);
+                    outPts[written] = cur + t * (nxt - cur);
+                    outKeys[written] = 0x8000u | ((segs[k] & 0xFFu) << 8) | (plane & 0xFFu);
+                    // Leaving the half-space, the new segment runs along the plane; entering
+                    // it, it continues along the segment being cut.
+                    outSegs[written] = curIn ? 128u + plane : segs[k];
+                    written++;
+                }
+            }
+            return written;
+        }
+    }
+}

@@ -1,0 +1,38 @@
+namespace Fulcrum.Dynamics
+{
+    /// <summary>
+    /// Projected Gauss-Seidel with non-linear Gauss-Seidel position correction (the Box2D v2.x /
+    /// Jolt scheme): integrate velocities, build the rows, warm start, Iterations velocity
+    /// passes with no position bias (speculative contacts and limits only let gaps close),
+    /// restitution, integrate positions, then PositionIterations passes that move the bodies
+    /// to remove a fraction of the remaining overlap and joint error. Because the position
+    /// correction never touches velocities, it adds no energy: a deep overlap is undone
+    /// without the body popping out.
+    /// </summary>
+    internal sealed class PgsSolver : IConstraintSolver
+    {
+        public SolverType Type => SolverType.Pgs;
+
+        public int SubstepCount(in WorldSettings settings) => 1;
+
+        public float Step(SolverContext context, IslandBuilder islands, float dt)
+        {
+            ref readonly WorldSettings s = ref context.Settings;
+            BodyStorage bodies = context.Storage;
+            Integrator.IntegrateVelocities(bodies, context.BodySlot, 1, context.BodyCount - 1, s.Gravity, dt, s.MaxLinearSpeed);
+            context.Prepare(islands);
+            context.WarmStart();
+            for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: false);
+            context.ApplyRestitution();
+            context.StoreVelocities();
+            Integrator.IntegratePositions(bodies, context.BodySlot, 1, context.BodyCount - 1, dt);
+            if (s.PositionIterations > 0)
+            {
+                context.LoadDeltas();
+                for (int i = 0; i < s.PositionIterations; i++) context.SolvePositions();
+                context.StorePositions();
+            }
+            return context.End();
+        }
+    }
+}

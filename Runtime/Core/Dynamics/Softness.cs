@@ -1,0 +1,54 @@
+using System;
+
+namespace Fulcrum.Dynamics
+{
+    /// <summary>
+    /// Coefficients of a soft constraint: a spring of natural frequency f (Hz) and damping
+    /// ratio zeta, integrated implicitly over the (sub)step h. With omega = 2 pi f the
+    /// implicit-Euler spring-damper gives (Catto, "Soft Step", Solver2D 2024; Box2D v3):
+    /// <code>
+    ///   biasRate     = omega / (2 zeta + h omega)
+    ///   massScale    = h omega (2 zeta + h omega) / (1 + h omega (2 zeta + h omega))
+    ///   impulseScale = 1 / (1 + h omega (2 zeta + h omega))
+    /// </code>
+    /// and the row update is dLambda = -m_eff massScale (Jv + biasRate C) - impulseScale lambda.
+    /// massScale + impulseScale = 1; as f grows the row tends to a rigid one that removes the
+    /// whole error in one (sub)step. f = 0 gives a rigid row with no position feedback.
+    /// </summary>
+    internal readonly struct Softness
+    {
+        /// <summary>Velocity bias per metre (or radian) of error, 1/s.</summary>
+        public readonly float BiasRate;
+        /// <summary>Scale on the effective mass, in (0, 1].</summary>
+        public readonly float MassScale;
+        /// <summary>Fraction of the accumulated impulse that leaks each iteration, in [0, 1).</summary>
+        public readonly float ImpulseScale;
+
+        public Softness(float biasRate, float massScale, float impulseScale)
+        {
+            BiasRate = biasRate;
+            MassScale = massScale;
+            ImpulseScale = impulseScale;
+        }
+
+        /// <summary>A rigid row without position feedback.</summary>
+        public static Softness Rigid => new Softness(0, 1, 0);
+
+        /// <summary>The coefficients for <paramref name="hertz"/> and <paramref name="dampingRatio"/> over the step <paramref name="h"/>.</summary>
+        public static Softness Make(float hertz, float dampingRatio, float h)
+        {
+            if (!(hertz > 0)) return Rigid;
+            float omega = 2f * MathF.PI * hertz;
+            float a1 = 2f * dampingRatio + h * omega;
+            float a2 = h * omega * a1;
+            float a3 = 1f / (1f + a2);
+            return new Softness(omega / a1, a2 * a3, a3);
+        }
+
+        /// <summary>
+        /// The stiffest spring that an explicit-in-time velocity solver keeps stable over a
+        /// step h: a quarter of the step rate (Box2D v3's contact hertz clamp).
+        /// </summary>
+        public static float MaxStableHertz(float h) => 0.25f / h;
+    }
+}

@@ -1,0 +1,36 @@
+namespace Fulcrum.Dynamics
+{
+    /// <summary>
+    /// Temporal Gauss-Seidel with soft constraints and relaxation (Catto's "soft step", Box2D
+    /// v3; PhysX's TGS is the same idea with a rigid bias). The step is cut into Substeps;
+    /// per substep: integrate velocities, warm start, Iterations biased passes (soft rows pull
+    /// positions back at a bounded rate), integrate positions, RelaxIterations unbiased passes
+    /// that remove the velocity the bias added. Restitution runs once after the substeps.
+    /// Contact separations and joint errors are re-evaluated each substep from the bodies'
+    /// motion, so small substeps act like small steps at the price of one narrow phase.
+    /// </summary>
+    internal sealed class TgsSolver : IConstraintSolver
+    {
+        public SolverType Type => SolverType.Tgs;
+
+        public int SubstepCount(in WorldSettings settings) => settings.Substeps;
+
+        public float Step(SolverContext context, IslandBuilder islands, float dt)
+        {
+            ref readonly WorldSettings s = ref context.Settings;
+            context.Prepare(islands);
+            for (int sub = 0; sub < s.Substeps; sub++)
+            {
+                context.IntegrateVelocities();
+                context.WarmStart();
+                for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true);
+                context.IntegratePositions();
+                for (int i = 0; i < s.RelaxIterations; i++) context.Solve(useBias: false);
+            }
+            context.ApplyRestitution();
+            context.StoreVelocities();
+            context.StorePositions();
+            return context.End();
+        }
+    }
+}
