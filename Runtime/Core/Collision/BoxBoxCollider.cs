@@ -123,7 +123,8 @@ namespace Fulcrum.Collision
             planeN[1] = -r1; planeD[1] = -o1 + e1;
             planeN[2] = r2; planeD[2] = o2 + e2;
             planeN[3] = -r2; planeD[3] = -o2 + e2;
-            int count = PolygonClipper.Clip(pts, keys, segs, 4, planeN, planeD, sp, sk, ss);
+            float clipTolerance = 0.001f + 0.002f * MathF.Max(e1, e2);
+            int count = PolygonClipper.Clip(pts, keys, segs, 4, planeN, planeD, sp, sk, ss, clipTolerance);
 
             uint refFeature = (uint)((referenceIsB ? 8 : 0) | (axisR * 2 + (sign > 0 ? 0 : 1)));
             uint incFeature = (uint)(j * 2 + (incSign > 0 ? 0 : 1));

@@ -20,15 +20,19 @@ namespace Fulcrum.Collision
         /// <summary>
         /// Clips <paramref name="points"/>[0, count) in place against planes
         /// dot(n_p, x) &lt;= d_p; returns the new count. Keys start as vertex indices and
-        /// segment codes as edge indices (set by the caller).
+        /// segment codes as edge indices (set by the caller). A vertex at most
+        /// <paramref name="tolerance"/> outside a plane counts as inside and is kept as it is
+        /// (with its key); crossings are still cut at the exact plane. So a corner lying on a
+        /// side plane (equal boxes stacked flush) keeps its feature id from step to step instead
+        /// of flipping between kept and clipped, which would lose its warm-start impulse.
         /// </summary>
         public static int Clip(Span<Vector3> points, Span<uint> keys, Span<uint> segments, int count,
             ReadOnlySpan<Vector3> planeNormals, ReadOnlySpan<float> planeOffsets,
-            Span<Vector3> scratchPoints, Span<uint> scratchKeys, Span<uint> scratchSegments)
+            Span<Vector3> scratchPoints, Span<uint> scratchKeys, Span<uint> scratchSegments, float tolerance = 0)
         {
             for (int p = 0; p < planeNormals.Length && count > 0; p++)
             {
-                int n = ClipOne(points, keys, segments, count, planeNormals[p], planeOffsets[p], (uint)p,
+                int n = ClipOne(points, keys, segments, count, planeNormals[p], planeOffsets[p], (uint)p, tolerance,
                     scratchPoints, scratchKeys, scratchSegments);
                 scratchPoints.Slice(0, n).CopyTo(points);
                 scratchKeys.Slice(0, n).CopyTo(keys);
@@ -39,7 +43,7 @@ namespace Fulcrum.Collision
         }
 
         static int ClipOne(ReadOnlySpan<Vector3> pts, ReadOnlySpan<uint> keys, ReadOnlySpan<uint> segs, int count,
-            Vector3 normal, float offset, uint plane,
+            Vector3 normal, float offset, uint plane, float tolerance,
             Span<Vector3> outPts, Span<uint> outKeys, Span<uint> outSegs)
         {
             int written = 0;
@@ -50,7 +54,7 @@ namespace Fulcrum.Collision
                 Vector3 cur = pts[k], nxt = pts[next];
                 float dc = Vector3.Dot(normal, cur) - offset;
                 float dn = Vector3.Dot(normal, nxt) - offset;
-                bool curIn = dc <= 0, nextIn = dn <= 0;
+                bool curIn = dc <= tolerance, nextIn = dn <= tolerance;
                 if (curIn && written < limit)
                 {
                     outPts[written] = cur;
@@ -58,7 +62,8 @@ namespace Fulcrum.Collision
                     outSegs[written] = segs[k];
                     written++;
                 }
-                if (curIn != nextIn && written < limit)
+                // A vertex inside only by the tolerance stands for the crossing itself.
+                if (curIn != nextIn && (curIn ? dc <= 0 : dn <= 0) && written < limit)
                 {
                     float t = dc / (dc - dn);
                     outPts[written] = cur + t * (nxt - cur);

@@ -150,6 +150,7 @@ namespace Fulcrum.Dynamics
             float contactHertz = MathF.Min(set.ContactHertz, Softness.MaxStableHertz(_h));
             _contactSoftness = Softness.Make(contactHertz, set.ContactDampingRatio, _h);
             _fixedSoftness = Softness.Make(MathF.Min(2f * contactHertz, Softness.MaxStableHertz(_h)), set.ContactDampingRatio, _h);
+
             _jointParameters = new JointSolver.StepParameters
             {
                 Joint = Softness.Make(MathF.Min(set.JointHertz, Softness.MaxStableHertz(_h)), set.JointDampingRatio, _h),

@@ -98,6 +98,7 @@ namespace Fulcrum
             BodyType ta = Bodies.Type[bodyA], tb = Bodies.Type[bodyB];
             if (sensor ? ta == BodyType.Static && tb == BodyType.Static : ta != BodyType.Dynamic && tb != BodyType.Dynamic) return;
             if ((s.CollidesWith[shapeA] & (1u << s.Layer[shapeB])) == 0 || (s.CollidesWith[shapeB] & (1u << s.Layer[shapeA])) == 0) return;
+            if (!sensor && JointBlocksCollision(bodyA, bodyB)) return;
             ShapeType ka = s.Geometry[shapeA].Type, kb = s.Geometry[shapeB].Type;
             if (!CollisionTable.Has(ka, kb)) return;
             if (ContactGraph.Find(shapeA, shapeB) >= 0) return;

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using Fulcrum.Collision;
 using Fulcrum.Dynamics;
 using Fulcrum.Mathematics;
 
@@ -83,6 +84,7 @@ namespace Fulcrum
             Joints.Data[slot] = j;
             Joints.Name[slot] = def.Name;
             Joints.Link(slot);
+            if (!def.CollideConnected && a >= 0 && b >= 0) DestroyContactsBetween(a, b);
             if (a >= 0) Wake(a);
             if (b >= 0) Wake(b);
             return new JointHandle(slot, Joints.Generation[slot]);
@@ -172,6 +174,29 @@ namespace Fulcrum
             }
             y = Vector3.Normalize(y);
             return Rotation.FromMatrix(new Mat3(axisB, y, Vector3.Cross(axisB, y)));
+        }
+
+        // Jointed bodies stop colliding at once: their existing contacts go (with end events);
+        // the broad phase's pair filter keeps new ones from forming.
+        void DestroyContactsBetween(int a, int b)
+        {
+            ContactGraph g = ContactGraph;
+            for (int s = Bodies.FirstShape[a]; s >= 0; s = Shapes.NextInBody[s])
+            {
+                int e = g.FirstEdge(s);
+                while (e >= 0)
+                {
+                    int next = g.NextEdge(e);
+                    int c = e >> 1;
+                    ref Contact ct = ref g.Contacts[c];
+                    if ((ct.BodyA == b || ct.BodyB == b) && (ct.Flags & ContactFlags.Sensor) == 0)
+                    {
+                        if ((ct.Flags & ContactFlags.Touching) != 0) RecordRemovalEnd(c);
+                        g.Destroy(c);
+                    }
+                    e = next;
+                }
+            }
         }
 
         /// <summary>Removes a joint and wakes its bodies. The handle goes stale.</summary>

@@ -12,24 +12,17 @@ namespace Fulcrum
         readonly TgsSolver _tgs = new TgsSolver();
         int[] _freeBodies = Array.Empty<int>();
 
-        // Until the narrow phase fills a contact set, tests hand the solver manifolds here:
-        // the callback runs at the start of the islands stage and fills TestManifolds.
-        internal ContactManifold[] TestManifolds = Array.Empty<ContactManifold>();
-        internal int TestManifoldCount;
-        internal Action<World>? TestNarrowPhase;
-
-        /// <summary>The manifolds of this step as the collision stage left them.</summary>
+        /// <summary>The manifolds of this step as the narrow phase left them (the contact set).</summary>
         ContactManifold[] StepManifolds(out int count)
         {
-            count = TestManifoldCount;
-            return TestManifolds;
+            count = Contacts.ManifoldCount;
+            return Contacts.Manifolds;
         }
 
         // Islands stage: wake what awake bodies touch, list the step's constraints, union-find.
         void BuildIslands()
         {
             _jointBreakCount = 0;
-            TestNarrowPhase?.Invoke(this);
             ContactManifold[] manifolds = StepManifolds(out int count);
             Joints.EnsureBodies(Bodies.SlotCount);
             _islands.Build(Bodies, Shapes, manifolds, count, Joints);
@@ -72,18 +65,21 @@ namespace Fulcrum
         /// <summary>Wakes the sleeping island of body <paramref name="slot"/>, if it sleeps in one.</summary>
         void WakeIsland(int slot) => _islands.WakeIsland(Bodies, slot);
 
-        // A removed body may have held others up: wake everything that touched it, and take its
-        // joints with it. Runs before its shapes (and so its contacts) are released.
+        // A removed body may have held others up: wake everything that touches it (sleeping
+        // neighbours included, through the persistent contacts), and take its joints with it.
+        // Runs before its shapes, and so its contacts, are released.
         void OnBodyDestroyed(int slot)
         {
             WakeIsland(slot);
-            ContactManifold[] manifolds = StepManifolds(out int count);
-            for (int k = 0; k < count; k++)
+            ContactGraph g = ContactGraph;
+            for (int s = Bodies.FirstShape[slot]; s >= 0; s = Shapes.NextInBody[s])
             {
-                ref ContactManifold m = ref manifolds[k];
-                if (m.PointCount == 0) continue;
-                if (m.BodyA == slot && m.BodyB >= 0) Wake(m.BodyB);
-                else if (m.BodyB == slot && m.BodyA >= 0) Wake(m.BodyA);
+                for (int e = g.FirstEdge(s); e >= 0; e = g.NextEdge(e))
+                {
+                    ref Contact c = ref g.Contacts[e >> 1];
+                    if ((c.Flags & ContactFlags.Touching) == 0) continue;
+                    Wake(c.BodyA == slot ? c.BodyB : c.BodyA);
+                }
             }
             DestroyJointsOf(slot);
         }

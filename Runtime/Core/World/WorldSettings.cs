@@ -33,7 +33,11 @@ namespace Fulcrum
         public int RelaxIterations;
         /// <summary>Reuse last step's impulses as the starting guess. Default: true.</summary>
         public bool WarmStarting;
-        /// <summary>Solve the normal rows of a 2-4 point manifold together (block solver). Default: false.</summary>
+        /// <summary>
+        /// Solve the normal rows of a 2-4 point manifold together (block solver: pairs of points
+        /// by exact 2x2 LCP enumeration). Keeps the support of a face contact symmetric, which
+        /// tall stacks need. Default: true.
+        /// </summary>
         public bool BlockSolver;
         /// <summary>Let resting islands fall asleep. Default: true.</summary>
         public bool EnableSleeping;
@@ -49,7 +53,10 @@ namespace Fulcrum
         public bool Deterministic;
         /// <summary>
         /// Contact stiffness of the soft contact constraint (TGS), Hz; clamped to a quarter of the
-        /// substep rate, and doubled against static and kinematic bodies. Default: 30 Hz.
+        /// substep rate, and doubled against static and kinematic bodies (within the same clamp).
+        /// Soft contacts sag under load by about (load / effective mass) g / (2 pi f)^2, and a
+        /// tall column on soft contacts can buckle: 60 Hz keeps a 40-box tower standing with the
+        /// default 4 substeps. Default: 60 Hz.
         /// </summary>
         public float ContactHertz;
         /// <summary>Damping ratio of the soft contact constraint (1 = critical). Default: 10.</summary>
@@ -80,14 +87,14 @@ namespace Fulcrum
             PositionIterations = 2,
             RelaxIterations = 1,
             WarmStarting = true,
-            BlockSolver = false,
+            BlockSolver = true,
             EnableSleeping = true,
             TimeToSleep = 0.5f,
             SleepLinearVelocity = 0.05f,
             SleepAngularVelocity = 0.05f,
             Threads = 1,
             Deterministic = true,
-            ContactHertz = 30f,
+            ContactHertz = 60f,
             ContactDampingRatio = 10f,
             JointHertz = 60f,
             JointDampingRatio = 5f,
