@@ -12,6 +12,8 @@ namespace Fulcrum.Benchmarks.Peers
         public double P95Ms { get; init; }
         /// <summary>Median wall time of a timed step, ms (includes time slices lost to other processes).</summary>
         public double WallMedianMs { get; init; }
+        /// <summary>Managed bytes the stepping thread allocated per timed step (mean).</summary>
+        public double BytesPerStep { get; init; }
         /// <summary>Horizontal distance of the tracked box from its start x/z at the end, m (NaN: no tracked box).</summary>
         public double Drift { get; init; }
         /// <summary>Start height minus end height of the tracked box, m (NaN: no tracked box).</summary>

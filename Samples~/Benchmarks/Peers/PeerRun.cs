@@ -12,21 +12,42 @@ namespace Fulcrum.Benchmarks.Peers
     public static class PeerRun
     {
         /// <summary>
-        /// Runs a small throwaway pile for at least <paramref name="seconds"/> of wall time and
-        /// <paramref name="minSteps"/> steps so that
-        /// the engine's code is fully JIT-compiled (tiered, with PGO) before any scene is timed, without
-        /// spending the timed scenes' own warm-up steps on it.
+        /// Brings an engine's code to steady state before anything is timed: a small falling pile
+        /// (every contact path), then a small resting pyramid in blocks of 100 steps until a block's
+        /// median step time stops improving (2 %) for three blocks and at least
+        /// <paramref name="seconds"/> have passed. Tier-1 recompilation with PGO runs on a background
+        /// thread that a busy machine starves, so a fixed step count is not enough.
+        /// Returns the wall seconds spent.
         /// </summary>
-        public static void WarmUp(IPeerEngine engine, PeerSettings settings, double seconds, int minSteps)
+        public static double WarmUp(Func<IPeerEngine> create, PeerSettings settings, double seconds, int pileSteps)
         {
-            PeerScene scene = PeerScene.Pile(4, 4, 0, 1);
-            engine.Build(scene, settings);
             long start = Stopwatch.GetTimestamp();
-            // Tier-1 recompilation runs on a background thread that a busy machine can starve, so
-            // a minimum step count backs up the wall-time minimum.
-            for (int step = 0; step < 3000 && (step < minSteps || Stopwatch.GetElapsedTime(start).TotalSeconds < seconds); step++)
-                engine.Step(settings.Dt);
-            engine.Dispose();
+            using (IPeerEngine pile = create())
+            {
+                pile.Build(PeerScene.Pile(4, 4, 0, 1), settings);
+                for (int step = 0; step < pileSteps; step++) pile.Step(settings.Dt);
+            }
+            using (IPeerEngine pyramid = create())
+            {
+                pyramid.Build(PeerScene.Pyramid(5, 0, 1), settings);
+                var block = new double[100];
+                double best = double.MaxValue;
+                int stale = 0;
+                for (int b = 0; b < 100 && (stale < 3 || Stopwatch.GetElapsedTime(start).TotalSeconds < seconds); b++)
+                {
+                    for (int k = 0; k < block.Length; k++)
+                    {
+                        double t = ThreadClock.NowMs();
+                        pyramid.Step(settings.Dt);
+                        block[k] = ThreadClock.NowMs() - t;
+                    }
+                    Array.Sort(block);
+                    double median = block[block.Length / 2];
+                    if (median < 0.98 * best) { best = median; stale = 0; }
+                    else stale++;
+                }
+            }
+            return Stopwatch.GetElapsedTime(start).TotalSeconds;
         }
 
         public static PeerResult Measure(IPeerEngine engine, PeerScene scene, PeerSettings settings)
@@ -37,8 +58,10 @@ namespace Fulcrum.Benchmarks.Peers
             var wallMs = new double[scene.MeasuredSteps];
             double maxPenetration = 0;
             bool finite = true;
+            long allocated = 0;
             for (int step = 0; step < total; step++)
             {
+                long bytes = GC.GetAllocatedBytesForCurrentThread();
                 double cpuStart = ThreadClock.NowMs();
                 long start = Stopwatch.GetTimestamp();
                 engine.Step(settings.Dt);
@@ -46,6 +69,7 @@ namespace Fulcrum.Benchmarks.Peers
                 double cpuEnd = ThreadClock.NowMs();
                 if (step >= scene.WarmupSteps)
                 {
+                    allocated += GC.GetAllocatedBytesForCurrentThread() - bytes;
                     cpuMs[step - scene.WarmupSteps] = cpuEnd - cpuStart;
                     wallMs[step - scene.WarmupSteps] = (end - start) * 1000.0 / Stopwatch.Frequency;
                 }
@@ -79,6 +103,7 @@ namespace Fulcrum.Benchmarks.Peers
                 MedianMs = Percentile(cpuMs, 0.5),
                 P95Ms = Percentile(cpuMs, 0.95),
                 WallMedianMs = Percentile(wallMs, 0.5),
+                BytesPerStep = scene.MeasuredSteps > 0 ? (double)allocated / scene.MeasuredSteps : 0,
                 Drift = drift,
                 Sink = sink,
                 MaxGroundPenetration = maxPenetration,

@@ -19,11 +19,10 @@ namespace Fulcrum.Benchmarks.Peers
 
         public void Run(TextWriter output, bool quick)
         {
-            var settings = new PeerSettings
-            {
-                Substeps = Option("--substeps=", WorldSettings.Default.Substeps),
-                Iterations = Option("--iterations=", WorldSettings.Default.Iterations),
-            };
+            int? substeps = Option("--substeps=", WorldSettings.Default.Substeps, output);
+            int? iterations = Option("--iterations=", WorldSettings.Default.Iterations, output);
+            if (substeps == null || iterations == null) return;
+            var settings = new PeerSettings { Substeps = substeps.Value, Iterations = iterations.Value };
             PeerScene[] scenes = quick
                 ? new[] { PeerScene.Tower(20, 30, 120), PeerScene.Pyramid(6, 10, 60), PeerScene.Pile(5, 4, 10, 60) }
                 : new[] { PeerScene.Tower(20, 60, 600), PeerScene.Pyramid(20, 30, 270), PeerScene.Pile(12, 14, 30, 270) };
@@ -31,7 +30,7 @@ namespace Fulcrum.Benchmarks.Peers
             string? hint = PeerRoster.MissingHint();
             if (hint != null) output.WriteLine(hint);
             output.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"matched: dt 1/60 s, {settings.Substeps} substeps x {settings.Iterations} iterations, relax {settings.RelaxIterations} (Fulcrum, Jitter2), friction {settings.Friction}, 1 kg unit cubes, contact {settings.ContactHertz} Hz / damping ratio {settings.ContactDampingRatio} / push-out {settings.MaxPushSpeed} m/s (Fulcrum, Bepu), no sleeping, no damping, 1 thread"));
+                $"matched: dt 1/60 s, {settings.Substeps} substeps x {settings.Iterations} iterations, relax {settings.RelaxIterations} (Fulcrum, Jitter2), Fulcrum block solver {(WorldSettings.Default.BlockSolver ? "on" : "off")}, friction {settings.Friction}, 1 kg unit cubes, contact {settings.ContactHertz} Hz / damping ratio {settings.ContactDampingRatio} / push-out {settings.MaxPushSpeed} m/s (Fulcrum, Bepu), no sleeping, no damping, 1 thread"));
             output.WriteLine(ThreadClock.IsCpuTime
                 ? "ms/step, p95: the stepping thread's CPU time (median, 95th percentile of timed steps); wall ms: median wall time; x Fulcrum: ms/step over Fulcrum's"
                 : "ms/step, p95: wall time (median, 95th percentile of timed steps); x Fulcrum: ms/step over Fulcrum's");
@@ -41,9 +40,9 @@ namespace Fulcrum.Benchmarks.Peers
             var versions = new List<string>();
             foreach (Func<IPeerEngine> create in engines)
             {
-                IPeerEngine engine = create();
-                versions.Add(engine.Name + " " + engine.Version);
-                PeerRun.WarmUp(engine, settings, quick ? 0.5 : 2.0, quick ? 60 : 300);
+                double warm = PeerRun.WarmUp(create, settings, quick ? 0.5 : 3.0, quick ? 60 : 300);
+                using IPeerEngine engine = create();
+                versions.Add(string.Create(CultureInfo.InvariantCulture, $"{engine.Name} {engine.Version} (warm-up {warm:F1} s)"));
             }
             output.WriteLine("engines: " + string.Join(", ", versions));
             var rows = new List<PeerResult>();
@@ -57,7 +56,7 @@ namespace Fulcrum.Benchmarks.Peers
         {
             var table = new List<string[]>
             {
-                new[] { "engine", "scene", "bodies", "ms/step", "p95 ms", "wall ms", "x Fulcrum", "drift mm", "sink mm", "ground pen mm", "finite" },
+                new[] { "engine", "scene", "bodies", "ms/step", "p95 ms", "wall ms", "x Fulcrum", "alloc B/step", "drift mm", "sink mm", "ground pen mm", "finite" },
             };
             double fulcrumMs = double.NaN;
             foreach (PeerResult r in rows)
@@ -66,7 +65,7 @@ namespace Fulcrum.Benchmarks.Peers
                 table.Add(new[]
                 {
                     r.Engine, r.Scene, r.Bodies.ToString(CultureInfo.InvariantCulture),
-                    Format(r.MedianMs, "F3"), Format(r.P95Ms, "F3"), Format(r.WallMedianMs, "F3"), Format(r.MedianMs / fulcrumMs, "F2"),
+                    Format(r.MedianMs, "F3"), Format(r.P95Ms, "F3"), Format(r.WallMedianMs, "F3"), Format(r.MedianMs / fulcrumMs, "F2"), Format(r.BytesPerStep, "F0"),
                     Format(r.Drift * 1000, "F1"), Format(r.Sink * 1000, "F1"), Format(r.MaxGroundPenetration * 1000, "F1"),
                     r.Finite ? "yes" : "NO",
                 });
@@ -87,14 +86,16 @@ namespace Fulcrum.Benchmarks.Peers
             double.IsNaN(value) ? "-" : value.ToString(format, CultureInfo.InvariantCulture);
 
         // Program passes every "--" argument through untouched, so options ride along as --name=value.
-        static int Option(string prefix, int fallback)
+        // A bad value prints one line and returns null: nothing runs.
+        static int? Option(string prefix, int fallback, TextWriter output)
         {
             foreach (string arg in Environment.GetCommandLineArgs())
                 if (arg.StartsWith(prefix, StringComparison.Ordinal))
                 {
                     if (int.TryParse(arg.AsSpan(prefix.Length), NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) && value >= 1)
                         return value;
-                    throw new ArgumentException($"{prefix}N needs an integer >= 1, got '{arg}'.", prefix.TrimEnd('='));
+                    output.WriteLine($"{prefix}N needs an integer >= 1, got '{arg}'; nothing was run.");
+                    return null;
                 }
             return fallback;
         }
