@@ -41,7 +41,7 @@ namespace Fulcrum.Benchmarks.Peers
             missing.Add("-p:JitterDir=DIR (a folder holding Jitter2.dll)");
 #endif
             if (missing.Count == 0) return null;
-            return "peers not compiled in; build them from source outside this repository, then run "
+            return "not every peer is compiled in; to add the missing ones, build them from source outside this repository, then run "
                  + "dotnet run -c Release --project Samples~/Benchmarks " + string.Join(" ", missing) + " -- peers";
         }
     }
