@@ -1,0 +1,65 @@
+using System.Numerics;
+
+namespace Fulcrum.Benchmarks.Peers
+{
+    /// <summary>Fulcrum itself, TGS with the matched substeps and iterations.</summary>
+    public sealed class FulcrumPeer : IPeerEngine
+    {
+        World? _world;
+        BodyHandle[] _bodies = System.Array.Empty<BodyHandle>();
+
+        public string Name => "Fulcrum";
+
+        public string Version => PeerRoster.VersionOf(typeof(World));
+
+        public void Build(PeerScene scene, PeerSettings settings)
+        {
+            WorldSettings ws = WorldSettings.Default;
+            ws.Solver = SolverType.Tgs;
+            ws.Substeps = settings.Substeps;
+            ws.Iterations = settings.Iterations;
+            ws.RelaxIterations = settings.RelaxIterations;
+            ws.Gravity = new Vector3(0, settings.GravityY, 0);
+            ws.ContactHertz = settings.ContactHertz;
+            ws.ContactDampingRatio = settings.ContactDampingRatio;
+            ws.MaxContactPushSpeed = settings.MaxPushSpeed;
+            ws.EnableSleeping = false;
+            ws.Threads = 1;
+            var world = new World(ws);
+
+            BodyHandle ground = world.CreateBody(BodyDef.Static(scene.Ground.Center));
+            world.AddShape(ground, Box(scene.Ground.HalfExtents, settings.Friction));
+
+            _bodies = new BodyHandle[scene.Boxes.Count];
+            for (int i = 0; i < _bodies.Length; i++)
+            {
+                PeerBox box = scene.Boxes[i];
+                BodyDef def = BodyDef.Dynamic(box.Center);
+                def.Rotation = box.Rotation;
+                def.Mass = settings.BoxMass;
+                def.AllowSleep = false;
+                _bodies[i] = world.CreateBody(def);
+                world.AddShape(_bodies[i], Box(box.HalfExtents, settings.Friction));
+            }
+            _world = world;
+        }
+
+        static ShapeDef Box(Vector3 halfExtents, float friction)
+        {
+            ShapeDef shape = ShapeDef.Of(ShapeGeometry.Box(halfExtents));
+            shape.Friction = friction;
+            return shape;
+        }
+
+        public void Step(float dt) => _world!.Step(dt);
+
+        public void ReadPose(int box, out Vector3 position, out Quaternion rotation)
+        {
+            BodyRef body = _world!.GetBody(_bodies[box]);
+            position = body.Position;
+            rotation = body.Rotation;
+        }
+
+        public void Dispose() => _world = null;
+    }
+}
