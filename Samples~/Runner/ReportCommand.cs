@@ -49,7 +49,6 @@ static class ReportCommand
                 table.Add(name, scene.BodyHandles.Count.ToString(), scene.Joints.Count.ToString(), steps.ToString(),
                     TextTable.Number(r.MedianMs), TextTable.Number(r.P95Ms), TextTable.Number(r.MaxPenetration),
                     TextTable.Number(r.MaxJointError), TextTable.Number(r.EnergyDrift), TextTable.Number(r.ClosedFormError));
-                if (SceneSetup.JointNote(scene) is string jointNote) notes.Add($"{name}: {jointNote}");
                 if (softNote != null) notes.Add($"{name}: {softNote}");
             }
             catch (UsageException e)

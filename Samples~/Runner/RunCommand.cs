@@ -32,7 +32,6 @@ static class RunCommand
         output.WriteLine($"solver: {SceneNames.Of(s.Type)}, {s.Iterations} iterations" +
                          (s.Type == SolverType.Tgs ? $" x {s.Substeps} substeps" : "") +
                          $", dt {SceneSetup.F(doc.Timestep)} s, {steps} steps ({SceneSetup.F(steps * doc.Timestep)} s), threads {settings.Threads}");
-        if (SceneSetup.JointNote(scene) is string jointNote) output.WriteLine("note: " + jointNote);
         if (softNote != null) output.WriteLine("note: " + softNote);
 
         RunResult result;

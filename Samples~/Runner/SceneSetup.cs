@@ -68,21 +68,11 @@ static class SceneSetup
         {
             return SceneBuilder.Build(doc, settings);
         }
-        catch (NotSupportedException e)
-        {
-            throw new UsageException($"{path}: {e.Message}", Cli.ExitScene);
-        }
         catch (SceneException e)
         {
             throw new UsageException($"{path}: {e.Errors[0]}", Cli.ExitScene);
         }
     }
-
-    /// <summary>Lines describing what of the scene is carried as data only.</summary>
-    public static string? JointNote(SceneInstance scene) =>
-        scene.Joints.Count > 0 && scene.JointHandles.Count == 0
-            ? $"{scene.Joints.Count} joint{(scene.Joints.Count == 1 ? "" : "s")} kept as data: the world has no joints yet, so linked bodies move freely"
-            : null;
 
     public static string F(float f) => f.ToString("R", CultureInfo.InvariantCulture);
 }

@@ -49,7 +49,6 @@ static class SweepCommand
         SceneRun.Run(reference, steps, doc.Timestep, afterStep: n => Record(reference, dynamic, refPositions, n));
 
         output.WriteLine($"sweep: {path}, {steps} steps of {SceneSetup.F(doc.Timestep)} s, reference tgs {ReferenceIterations}x{ReferenceSubsteps}");
-        if (SceneSetup.JointNote(reference) is string jointNote) output.WriteLine("note: " + jointNote);
         if (softNote != null) output.WriteLine("note: " + softNote);
 
         var points = new List<SweepPoint>();

@@ -22,7 +22,8 @@ namespace Fulcrum.Tests.Scenes
             Assert.That(world.Settings.Solver, Is.EqualTo(SolverType.Tgs));
             Assert.That(scene.Timestep, Is.EqualTo(0.0166667f));
             Assert.That(scene.Joints.Count, Is.EqualTo(1));
-            Assert.That(scene.JointHandles, Is.Empty);
+            Assert.That(scene.JointHandles, Has.Count.EqualTo(1));
+            Assert.That(world.IsValid(scene.JointHandles[0]), Is.True);
             Assert.That(scene.SoftBodies.Count, Is.EqualTo(1));
             Assert.Throws<System.Collections.Generic.KeyNotFoundException>(() => scene.GetBody("nobody"));
         }
@@ -68,12 +69,23 @@ namespace Fulcrum.Tests.Scenes
         }
 
         [Test]
-        public void A_convex_shape_cannot_be_built_yet_and_the_error_names_its_path()
+        public void A_convex_shape_builds_a_hull_with_its_polyhedral_mass()
         {
-            string shape = """{ "type": "compound", "children": [ { "shape": { "type": "sphere", "radius": 0.5 } }, { "shape": { "type": "convex", "points": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]] } } ] }""";
+            // The unit corner tetrahedron: volume 1/6, centroid (1/4, 1/4, 1/4).
+            string shape = """{ "type": "convex", "points": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]] }""";
+            SceneInstance scene = SceneBuilder.Build(SceneFile.Parse(SceneSamples.OneBall(shape: shape)));
+            BodyHandle body = scene.GetBody("ball");
+            Assert.That(scene.World.GetBody(body).Mass, Is.EqualTo(1000f / 6f).Within(1e-2f));
+            Assert.That(scene.World.GetBody(body).LocalCenterOfMass.X, Is.EqualTo(0.25f).Within(1e-5f));
+        }
+
+        [Test]
+        public void A_flat_convex_shape_is_refused_at_its_path()
+        {
+            string shape = """{ "type": "compound", "children": [ { "shape": { "type": "sphere", "radius": 0.5 } }, { "shape": { "type": "convex", "points": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]] } } ] }""";
             SceneDocument doc = SceneFile.Parse(SceneSamples.OneBall(shape: shape));
-            var e = Assert.Throws<NotSupportedException>(() => SceneBuilder.Build(doc))!;
-            Assert.That(e.Message, Does.StartWith("$.bodies[0].shape.children[1].shape: convex shapes"));
+            var e = Assert.Throws<SceneException>(() => SceneBuilder.Build(doc))!;
+            Assert.That(e.Message, Does.StartWith("$.bodies[0].shape.children[1].shape: "));
         }
 
         [Test]

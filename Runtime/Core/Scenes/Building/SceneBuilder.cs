@@ -6,8 +6,8 @@ namespace Fulcrum.Scenes
     /// <summary>
     /// Builds a <see cref="World"/> from a <see cref="SceneDocument"/>: world settings from
     /// gravity and solver, then every body (written-out and generated) with its shapes,
-    /// material and mass. Joints and soft bodies are returned as data in the
-    /// <see cref="SceneInstance"/>.
+    /// material and mass, then every joint. Soft bodies are returned as data in the
+    /// <see cref="SceneInstance"/> for Fulcrum.SoftBodies to create (SceneSoftBodyBuilder).
     /// </summary>
     public static class SceneBuilder
     {
@@ -17,9 +17,8 @@ namespace Fulcrum.Scenes
         /// <summary>
         /// Builds the scene on <paramref name="settings"/>, whose gravity, solver, iterations
         /// and substeps the scene overrides (the rest, threads for example, are kept). Throws a
-        /// <see cref="SceneException"/> when the document is invalid, and a
-        /// <see cref="System.NotSupportedException"/> naming the path of a shape Core cannot
-        /// build yet; in both cases no world is returned.
+        /// <see cref="SceneException"/> naming the JSON path when the document is invalid or a
+        /// hull, mesh or joint cannot be built; then no world is returned.
         /// </summary>
         public static SceneInstance Build(SceneDocument document, WorldSettings settings)
         {
@@ -58,7 +57,21 @@ namespace Fulcrum.Scenes
                 foreach (ShapeDef shape in shapes[i]) world.AddShape(h, shape);
                 handles.Add(h);
             }
-            return new SceneInstance(world, document, e, handles);
+            var instance = new SceneInstance(world, document, e, handles);
+            for (int j = 0; j < e.Joints.Count; j++)
+            {
+                JointDef def = SceneJointFactory.Definition(e.Joints[j], name => name == null ? BodyHandle.None : instance.GetBody(name));
+                try
+                {
+                    instance.AddJoint(world.CreateJoint(def));
+                }
+                catch (System.ArgumentException error)
+                {
+                    // Limits the validator cannot see (a body jointed to itself, say): name the entry.
+                    throw new SceneException(new SceneError(e.JointSources[j], error.Message));
+                }
+            }
+            return instance;
         }
 
         static List<ShapeDef> ShapesOf(SceneBody body, SceneMaterial? material, string path)

@@ -9,9 +9,8 @@ namespace Fulcrum.Scenes
     public static class SceneGeometry
     {
         /// <summary>
-        /// The geometry of <paramref name="shape"/>; <paramref name="path"/> names it in errors.
-        /// Convex hulls and triangle meshes throw <see cref="NotSupportedException"/> naming the
-        /// path until Core has geometry factories for them.
+        /// The geometry of <paramref name="shape"/>; <paramref name="path"/> names it in errors:
+        /// a degenerate hull or mesh throws a <see cref="SceneException"/> at that path.
         /// </summary>
         public static ShapeGeometry Create(SceneShape shape, string path)
         {
@@ -21,13 +20,26 @@ namespace Fulcrum.Scenes
                 case SceneBox b: return ShapeGeometry.Box(b.HalfExtents);
                 case SceneCapsule c: return ShapeGeometry.Capsule(c.Radius, c.HalfHeight);
                 case ScenePlane p: return ShapeGeometry.Plane(p.Normal, p.Offset);
-                // Seam for the collision branch: build these with its ShapeGeometry factories.
-                case SceneConvex _:
-                    throw new NotSupportedException($"{path}: convex shapes are read but cannot be built yet: Core has no convex hull geometry factory.");
-                case SceneMesh _:
-                    throw new NotSupportedException($"{path}: mesh shapes are read but cannot be built yet: Core has no triangle mesh geometry factory.");
+                case SceneConvex h:
+                    return Checked(path, () => ShapeGeometry.ConvexHull(h.Points.ToArray()));
+                case SceneMesh m:
+                    return Checked(path, () => ShapeGeometry.TriangleMesh(TriangleMesh.Create(m.Vertices.ToArray(), m.Triangles.ToArray())));
                 default:
                     throw new ArgumentException($"{path}: a {SceneNames.Of(shape.Type)} has no single geometry; add its children one by one.", nameof(shape));
+            }
+        }
+
+        // Hull and mesh checks (fewer than 4 non-coplanar points, degenerate triangles) happen
+        // in their factories; report them at the shape's JSON path.
+        static ShapeGeometry Checked(string path, Func<ShapeGeometry> build)
+        {
+            try
+            {
+                return build();
+            }
+            catch (ArgumentException e)
+            {
+                throw new SceneException(new SceneError(path, e.Message));
             }
         }
     }

@@ -46,14 +46,15 @@ namespace Fulcrum.Scenes
         public BodyHandle GetBody(string name) =>
             _byName.TryGetValue(name, out BodyHandle h) ? h : throw new KeyNotFoundException($"The scene has no body named '{name}'.");
 
-        /// <summary>
-        /// The scene's joints (written-out and generated) as data. Core has no joints yet, so
-        /// the builder creates none; <see cref="JointHandles"/> stays empty until it does.
-        /// </summary>
+        /// <summary>The scene's joints (written-out and generated) as data.</summary>
         public IReadOnlyList<SceneJoint> Joints => Expansion.Joints;
 
-        /// <summary>Handles of the joints created in the world (parallel to <see cref="Joints"/> once joints are wired; empty now).</summary>
-        public IReadOnlyList<JointHandle> JointHandles { get; } = new List<JointHandle>();
+        /// <summary>Handles of the joints created in the world, parallel to <see cref="Joints"/>.</summary>
+        public IReadOnlyList<JointHandle> JointHandles => _joints;
+
+        readonly List<JointHandle> _joints = new List<JointHandle>();
+
+        internal void AddJoint(JointHandle joint) => _joints.Add(joint);
 
         /// <summary>The scene's soft bodies as data, for Fulcrum.SoftBodies to create.</summary>
         public IReadOnlyList<SceneSoftBody> SoftBodies => Document.SoftBodies;
