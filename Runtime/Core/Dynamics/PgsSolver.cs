@@ -28,7 +28,7 @@ namespace Fulcrum.Dynamics
             // Restitution once the bodies have reached each other (a speculative contact closes
             // during the position update), as TGS does after its substeps.
             context.LoadVelocities();
-            context.ApplyRestitution();
+            for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
             context.StoreVelocities();
             if (s.PositionIterations > 0)
             {
