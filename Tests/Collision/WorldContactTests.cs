@@ -288,5 +288,46 @@ namespace Fulcrum.Tests.Collision
             Assert.That(allocated, Is.EqualTo(0));
             Assert.That(w.Contacts.ManifoldCount, Is.GreaterThan(300));
         }
+    
+
+        [Test]
+        public void A_mixed_scene_with_mesh_hulls_sensors_ccd_and_events_steps_without_allocating()
+        {
+            var w = NoGravity();
+            var mesh = TriangleMesh.Create(
+                new[] { new Vector3(-10, 0, -10), new Vector3(10, 0, -10), new Vector3(10, 0, 10), new Vector3(-10, 0, 10) },
+                new[] { 0, 3, 2, 0, 2, 1 });
+            w.AddShape(w.CreateBody(BodyDef.Static(Vector3.Zero)), ShapeDef.Of(ShapeGeometry.TriangleMesh(mesh)));
+            ShapeDef sensor = ShapeDef.Of(ShapeGeometry.Box(new Vector3(3, 1, 3)));
+            sensor.IsSensor = true;
+            w.AddShape(w.CreateBody(BodyDef.Static(new Vector3(0, 1, 0))), sensor);
+            var hull = ConvexHull.Create(new[] { new Vector3(-0.3f, 0, -0.3f), new Vector3(0.3f, 0, -0.3f), new Vector3(0, 0, 0.4f), new Vector3(0, 0.5f, 0) });
+            var r = new Random(4);
+            for (int i = 0; i < 40; i++)
+            {
+                BodyDef d = BodyDef.Dynamic(new Vector3(-6 + (i % 8) * 1.5f, 0.499f, -4 + (i / 8) * 1.5f));
+                d.LinearVelocity = CollisionTestKit.RandomVector(r, 0.3f) * new Vector3(1, 0, 1);
+                d.Ccd = i % 10 == 0;
+                BodyHandle b = w.CreateBody(d);
+                ShapeGeometry g = (i % 4) switch
+                {
+                    0 => ShapeGeometry.Box(new Vector3(0.5f)),
+                    1 => ShapeGeometry.ConvexHull(hull),
+                    2 => ShapeGeometry.Capsule(0.2f, 0.3f),
+                    _ => ShapeGeometry.Sphere(0.5f),
+                };
+                w.AddShape(b, ShapeDef.Of(g));
+            }
+            for (int i = 0; i < 20; i++) w.Step(1 / 60f);
+            long allocated = 0;
+            for (int i = 0; i < 30; i++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                w.Step(1 / 60f);
+                allocated += GC.GetAllocatedBytesForCurrentThread() - before;
+            }
+            Assert.That(allocated, Is.EqualTo(0));
+            Assert.That(w.ContactEvents.Length, Is.GreaterThan(10));
+        }
     }
 }

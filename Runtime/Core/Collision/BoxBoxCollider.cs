@@ -29,35 +29,51 @@ namespace Fulcrum.Collision
         {
             Vector3 d = centerB - centerA;
             float speculative = output.Speculative;
+            // Everything in A's frame: C = RA^T RB (B's axes seen from A), Gottschalk's
+            // projections, no normalisation except for the edge axes' lengths.
+            Span<float> c = stackalloc float[9];
+            Span<float> ac = stackalloc float[9];
+            for (int i = 0; i < 3; i++)
+            {
+                Vector3 ai = Axis(rotA, i);
+                for (int j = 0; j < 3; j++)
+                {
+                    float v = Vector3.Dot(ai, Axis(rotB, j));
+                    c[3 * i + j] = v;
+                    ac[3 * i + j] = MathF.Abs(v) + 1e-6f;
+                }
+            }
+            Vector3 dA = rotA.TransposeMultiply(d), dB = rotB.TransposeMultiply(d);
 
             float bestFaceA = float.MinValue; int faceA = 0;
             for (int i = 0; i < 3; i++)
             {
-                Vector3 axis = Axis(rotA, i);
-                float s = MathF.Abs(Vector3.Dot(d, axis)) - Comp(hA, i) - Project(rotB, hB, axis);
+                float s = MathF.Abs(Comp(dA, i)) - Comp(hA, i) - (hB.X * ac[3 * i] + hB.Y * ac[3 * i + 1] + hB.Z * ac[3 * i + 2]);
                 if (s > speculative) return;
                 if (s > bestFaceA) { bestFaceA = s; faceA = i; }
             }
             float bestFaceB = float.MinValue; int faceB = 0;
             for (int j = 0; j < 3; j++)
             {
-                Vector3 axis = Axis(rotB, j);
-                float s = MathF.Abs(Vector3.Dot(d, axis)) - Comp(hB, j) - Project(rotA, hA, axis);
+                float s = MathF.Abs(Comp(dB, j)) - Comp(hB, j) - (hA.X * ac[j] + hA.Y * ac[3 + j] + hA.Z * ac[6 + j]);
                 if (s > speculative) return;
                 if (s > bestFaceB) { bestFaceB = s; faceB = j; }
             }
             float bestEdge = float.MinValue; int edgeA = 0, edgeB = 0;
             for (int i = 0; i < 3; i++)
             {
-                Vector3 ai = Axis(rotA, i);
+                int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
                 for (int j = 0; j < 3; j++)
                 {
-                    Vector3 l = Vector3.Cross(ai, Axis(rotB, j));
-                    float len = l.Length();
+                    int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+                    // L = a_i x b_j; |L| = sqrt(1 - C_ij^2).
+                    float len = MathF.Sqrt(c[3 * i1 + j] * c[3 * i1 + j] + c[3 * i2 + j] * c[3 * i2 + j]);
                     // Near-parallel edges: the face axes already cover this direction.
                     if (len < 1e-3f) continue;
-                    l /= len;
-                    float s = MathF.Abs(Vector3.Dot(d, l)) - Project(rotA, hA, l) - Project(rotB, hB, l);
+                    float dist = MathF.Abs(Comp(dA, i2) * c[3 * i1 + j] - Comp(dA, i1) * c[3 * i2 + j]);
+                    float ra = Comp(hA, i1) * ac[3 * i2 + j] + Comp(hA, i2) * ac[3 * i1 + j];
+                    float rb = Comp(hB, j1) * ac[3 * i + j2] + Comp(hB, j2) * ac[3 * i + j1];
+                    float s = (dist - ra - rb) / len;
                     if (s > speculative) return;
                     if (s > bestEdge) { bestEdge = s; edgeA = i; edgeB = j; }
                 }
@@ -170,10 +186,6 @@ namespace Fulcrum.Collision
             output.BeginPatch(l);
             output.Add(0.5f * (qa + qb), sep, 0x80000000u | ((uint)i << 12) | (signsA << 8) | ((uint)j << 4) | signsB);
         }
-
-        // Half-width of a box (rotation r, half-extents h) along a unit axis.
-        static float Project(in Mat3 r, Vector3 h, Vector3 axis) =>
-            h.X * MathF.Abs(Vector3.Dot(r.C0, axis)) + h.Y * MathF.Abs(Vector3.Dot(r.C1, axis)) + h.Z * MathF.Abs(Vector3.Dot(r.C2, axis));
 
         static Vector3 Axis(in Mat3 r, int i) => i == 0 ? r.C0 : i == 1 ? r.C1 : r.C2;
 

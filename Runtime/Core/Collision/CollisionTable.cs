@@ -25,6 +25,15 @@ namespace Fulcrum.Collision
             Register(ShapeType.Sphere, ShapeType.Plane, PlaneCollider.Collide);
             Register(ShapeType.Box, ShapeType.Plane, PlaneCollider.Collide);
             Register(ShapeType.Capsule, ShapeType.Plane, PlaneCollider.Collide);
+            Register(ShapeType.ConvexHull, ShapeType.Plane, PlaneCollider.Collide);
+            Register(ShapeType.Sphere, ShapeType.ConvexHull, ConvexCollider.Collide);
+            Register(ShapeType.Box, ShapeType.ConvexHull, ConvexCollider.Collide);
+            Register(ShapeType.Capsule, ShapeType.ConvexHull, ConvexCollider.Collide);
+            Register(ShapeType.ConvexHull, ShapeType.ConvexHull, ConvexCollider.Collide);
+            Register(ShapeType.Sphere, ShapeType.TriangleMesh, MeshCollider.Collide);
+            Register(ShapeType.Box, ShapeType.TriangleMesh, MeshCollider.Collide);
+            Register(ShapeType.Capsule, ShapeType.TriangleMesh, MeshCollider.Collide);
+            Register(ShapeType.ConvexHull, ShapeType.TriangleMesh, MeshCollider.Collide);
         }
 
         static void Register(ShapeType a, ShapeType b, PairFunction f)

@@ -13,20 +13,21 @@ namespace Fulcrum.Collision
     /// </summary>
     internal sealed class ContactBuffer
     {
-        /// <summary>The most patches a buffer holds.</summary>
-        public const int MaxPatches = 16;
-
         public Vector3[] Position = new Vector3[64];
         public float[] Separation = new float[64];
         public uint[] Id = new uint[64];
         public int PointCount;
 
-        public Vector3[] PatchNormal = new Vector3[MaxPatches];
-        public int[] PatchStart = new int[MaxPatches + 1];
+        public Vector3[] PatchNormal = new Vector3[8];
+        public int[] PatchStart = new int[9];
         public int PatchCount;
+        ContactBuffer? _scratch;
 
         /// <summary>The largest separation a point may have and still be kept, metres.</summary>
         public float Speculative;
+
+        /// <summary>A second buffer for pair functions that gather per-part results first (meshes).</summary>
+        public ContactBuffer Scratch => _scratch ??= new ContactBuffer();
 
         /// <summary>Empties the buffer for a new pair.</summary>
         public void Clear(float speculative)
@@ -42,7 +43,11 @@ namespace Fulcrum.Collision
         {
             // An empty previous patch is replaced rather than kept.
             if (PatchCount > 0 && PatchStart[PatchCount - 1] == PointCount) PatchCount--;
-            if (PatchCount == MaxPatches) PatchCount--; // callers merge patches well before this
+            if (PatchCount == PatchNormal.Length)
+            {
+                Array.Resize(ref PatchNormal, 2 * PatchNormal.Length);
+                Array.Resize(ref PatchStart, 2 * PatchNormal.Length + 1);
+            }
             PatchNormal[PatchCount] = normal;
             PatchStart[PatchCount] = PointCount;
             PatchCount++;
@@ -66,6 +71,14 @@ namespace Fulcrum.Collision
             PatchStart[PatchCount] = PointCount;
         }
 
+        /// <summary>Drops every point and patch added after the counts given.</summary>
+        public void Truncate(int pointCount, int patchCount)
+        {
+            PointCount = pointCount;
+            PatchCount = patchCount;
+            PatchStart[patchCount] = pointCount;
+        }
+
         /// <summary>Points in patch <paramref name="p"/>.</summary>
         public int PatchPointCount(int p) => PatchStart[p + 1] - PatchStart[p];
 
@@ -83,7 +96,7 @@ namespace Fulcrum.Collision
             return s;
         }
 
-        /// <summary>Drops empty patches and reduces every patch to at most four points.</summary>
+        /// <summary>Drops empty patches and reduces every patch to at most four points spanning its area.</summary>
         public void Reduce()
         {
             int write = 0, writePatch = 0;
@@ -91,7 +104,7 @@ namespace Fulcrum.Collision
             {
                 int start = PatchStart[p], count = PatchStart[p + 1] - start;
                 if (count == 0) continue;
-                if (count > ContactManifold.MaxPoints)
+                if (count > 2)
                     count = ManifoldReduction.Reduce(Position, Separation, Id, start, count, PatchNormal[p]);
                 for (int i = 0; i < count; i++)
                 {

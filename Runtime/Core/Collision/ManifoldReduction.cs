@@ -14,11 +14,12 @@ namespace Fulcrum.Collision
     {
         /// <summary>
         /// Reorders points [start, start + count) so the kept ones come first; returns how
-        /// many are kept (at most <see cref="ContactManifold.MaxPoints"/>).
+        /// many are kept (at most <see cref="ContactManifold.MaxPoints"/>). Points that add no
+        /// area (on the segment of two others, inside the triangle of three) are dropped too.
         /// </summary>
         public static int Reduce(Vector3[] position, float[] separation, uint[] id, int start, int count, Vector3 normal)
         {
-            if (count <= ContactManifold.MaxPoints) return count;
+            if (count <= 2) return count;
             int end = start + count;
 
             int a = start;
@@ -34,6 +35,7 @@ namespace Fulcrum.Collision
                 float l = d.LengthSquared();
                 if (l > best) { best = l; b = i; }
             }
+            float bestLength = best;
 
             int c = -1;
             best = -1;
@@ -47,11 +49,13 @@ namespace Fulcrum.Collision
             // The fourth point: the one farthest outside the triangle (a, b, c), measured by the
             // most negative signed area against the triangle's edges taken counter-clockwise.
             int d4 = -1;
-            if (best > 1e-12f)
+            // A third point must stand off the line a-b by more than 1e-4 of its length.
+            bool flat = !(best > 1e-4f * bestLength);
+            if (!flat)
             {
                 Vector3 pa = position[a], pb = position[b], pc = position[c];
                 if (side < 0) (pb, pc) = (pc, pb);
-                float most = -1e-12f;
+                float most = -1e-4f * bestLength;
                 for (int i = start; i < end; i++)
                 {
                     if (i == a || i == b || i == c) continue;
@@ -65,7 +69,7 @@ namespace Fulcrum.Collision
             Span<int> chosen = stackalloc int[4];
             chosen[kept++] = a;
             if (b != a) chosen[kept++] = b;
-            if (c >= 0 && c != a && c != b) chosen[kept++] = c;
+            if (c >= 0 && c != a && c != b && !flat) chosen[kept++] = c;
             if (d4 >= 0) chosen[kept++] = d4;
             for (int i = 1; i < kept; i++)
                 for (int j = i; j > 0 && chosen[j - 1] > chosen[j]; j--)

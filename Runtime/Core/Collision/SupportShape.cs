@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using Fulcrum.Mathematics;
 
@@ -116,6 +117,90 @@ namespace Fulcrum.Collision
                 }
                 case SupportKind.Polytope: return Center + Axes * Hull!.Vertices[index];
                 default: return index == 0 ? A : index == 1 ? B : C;
+            }
+        }
+
+        /// <summary>
+        /// The feature of the core that faces direction <paramref name="n"/> most: a polygon
+        /// (box or hull face, triangle) counter-clockwise about its outward
+        /// <paramref name="faceNormal"/>, a segment (a capsule lying across n) or a point.
+        /// Returns the vertex count (at most the span's length) and an id of the feature.
+        /// </summary>
+        public readonly int SupportFace(Vector3 n, Span<Vector3> vertices, out Vector3 faceNormal, out int faceId)
+        {
+            switch (Kind)
+            {
+                case SupportKind.Point:
+                    vertices[0] = A;
+                    faceNormal = n;
+                    faceId = 0;
+                    return 1;
+                case SupportKind.Segment:
+                {
+                    Vector3 d = B - A;
+                    float len = d.Length();
+                    faceNormal = n;
+                    if (len > 1e-6f && MathF.Abs(Vector3.Dot(d, n)) < 0.05f * len * n.Length())
+                    {
+                        vertices[0] = A;
+                        vertices[1] = B;
+                        faceId = 0;
+                        return 2;
+                    }
+                    vertices[0] = Support(n, out int end);
+                    faceId = 1 + end;
+                    return 1;
+                }
+                case SupportKind.Box:
+                {
+                    Vector3 l = Axes.TransposeMultiply(n);
+                    Vector3 al = Vector3.Abs(l);
+                    int k = al.X >= al.Y && al.X >= al.Z ? 0 : al.Y >= al.Z ? 1 : 2;
+                    float sign = (k == 0 ? l.X : k == 1 ? l.Y : l.Z) >= 0 ? 1f : -1f;
+                    Vector3 axisK = k == 0 ? Axes.C0 : k == 1 ? Axes.C1 : Axes.C2;
+                    Vector3 axisU = k == 0 ? Axes.C1 : k == 1 ? Axes.C2 : Axes.C0;
+                    Vector3 axisV = k == 0 ? Axes.C2 : k == 1 ? Axes.C0 : Axes.C1;
+                    float hk = k == 0 ? Extent.X : k == 1 ? Extent.Y : Extent.Z;
+                    float hu = k == 0 ? Extent.Y : k == 1 ? Extent.Z : Extent.X;
+                    float hv = k == 0 ? Extent.Z : k == 1 ? Extent.X : Extent.Y;
+                    faceNormal = axisK * sign;
+                    Vector3 c = Center + faceNormal * hk, u = axisU * hu, v = axisV * (hv * sign);
+                    // u x v = sign * axisK: counter-clockwise about the outward normal.
+                    vertices[0] = c + u + v;
+                    vertices[1] = c - u + v;
+                    vertices[2] = c - u - v;
+                    vertices[3] = c + u - v;
+                    faceId = 2 * k + (sign > 0 ? 0 : 1);
+                    return 4;
+                }
+                case SupportKind.Polytope:
+                {
+                    ConvexHull h = Hull!;
+                    int f = h.SupportFace(Axes.TransposeMultiply(n));
+                    faceNormal = Axes * h.FaceNormals[f];
+                    int start = h.FaceStart[f], count = Math.Min(h.FaceStart[f + 1] - start, vertices.Length);
+                    for (int i = 0; i < count; i++) vertices[i] = Center + Axes * h.Vertices[h.FaceVertices[start + i]];
+                    faceId = f;
+                    return count;
+                }
+                default:
+                {
+                    Vector3 tn = Vector3.Cross(B - A, C - A);
+                    float len = tn.Length();
+                    faceNormal = len > 0 ? tn / len : n;
+                    faceId = 0;
+                    if (Vector3.Dot(faceNormal, n) >= 0)
+                    {
+                        vertices[0] = A; vertices[1] = B; vertices[2] = C;
+                    }
+                    else
+                    {
+                        faceNormal = -faceNormal;
+                        faceId = 1;
+                        vertices[0] = A; vertices[1] = C; vertices[2] = B;
+                    }
+                    return 3;
+                }
             }
         }
 

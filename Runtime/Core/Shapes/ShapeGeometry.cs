@@ -69,6 +69,23 @@ namespace Fulcrum
             return new ShapeGeometry(ShapeType.Plane, 0, 0, Vector3.Zero, normal / len, offset, null);
         }
 
+        /// <summary>A convex hull (dynamic bodies allowed). The hull is shared, not copied.</summary>
+        public static ShapeGeometry ConvexHull(ConvexHull hull)
+        {
+            if (hull == null) throw new ArgumentNullException(nameof(hull), "hull must not be null.");
+            return new ShapeGeometry(ShapeType.ConvexHull, 0, 0, Vector3.Zero, Vector3.Zero, 0, hull);
+        }
+
+        /// <summary>The convex hull of a point cloud (see <see cref="Fulcrum.ConvexHull.Create"/> for what is rejected).</summary>
+        public static ShapeGeometry ConvexHull(ReadOnlySpan<Vector3> points) => ConvexHull(Fulcrum.ConvexHull.Create(points));
+
+        /// <summary>A static triangle mesh (static bodies only). The mesh is shared, not copied.</summary>
+        public static ShapeGeometry TriangleMesh(TriangleMesh mesh)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh), "mesh must not be null.");
+            return new ShapeGeometry(ShapeType.TriangleMesh, 0, 0, Vector3.Zero, Vector3.Zero, 0, mesh);
+        }
+
         /// <summary>Geometry of another kind carrying its own data (hulls and meshes).</summary>
         internal static ShapeGeometry WithData(ShapeType type, object data, float radius = 0) =>
             new ShapeGeometry(type, radius, 0, Vector3.Zero, Vector3.Zero, 0, data);
@@ -132,6 +149,8 @@ namespace Fulcrum
             ShapeType.Box => $"box(h={HalfExtents})",
             ShapeType.Capsule => $"capsule(r={Radius}, h={HalfHeight})",
             ShapeType.Plane => $"plane(n={Normal}, d={Offset})",
+            ShapeType.ConvexHull when Data is ConvexHull h => $"hull({h.VertexCount} vertices, {h.FaceCount} faces)",
+            ShapeType.TriangleMesh when Data is TriangleMesh m => $"mesh({m.TriangleCount} triangles)",
             _ => Type.ToString(),
         };
     }

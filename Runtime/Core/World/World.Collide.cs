@@ -16,13 +16,26 @@ namespace Fulcrum
         readonly ContactPointCache _pointCache = new ContactPointCache();
         ulong[] _sortKeys = new ulong[64];
         int[] _sortItems = new int[64];
+        int _sortCount;
         bool _anyWoken;
+        // Per shape slot: how far the shape can move in this step (refreshed for awake moving
+        // shapes by the broad phase; 0 for static ones), and the step its fat box last changed.
+        float[] _shapeMotion = Array.Empty<float>();
+        long[] _fatBoxStep = Array.Empty<long>();
 
         float SpeculativeBase => CollisionMargins.SpeculativeDistance(_settings.LinearSlop);
 
         void OnShapeAdded(int shape)
         {
             ContactGraph.EnsureShapeCapacity(Shapes.SlotCount);
+            if (_shapeMotion.Length < Shapes.SlotCount)
+            {
+                int n = Math.Max(Shapes.SlotCount, 2 * _shapeMotion.Length);
+                Array.Resize(ref _shapeMotion, n);
+                Array.Resize(ref _fatBoxStep, n);
+            }
+            _shapeMotion[shape] = 0;
+            _fatBoxStep[shape] = _stepIndex;
             int b = Shapes.Body[shape];
             bool isStatic = Bodies.Type[b] == BodyType.Static;
             Aabb fat = Shapes.WorldAabb[shape].Expanded(CollisionMargins.AabbMargin + SpeculativeBase);
@@ -65,19 +78,22 @@ namespace Fulcrum
                 float angular = b.AngularVelocity[body].Length() * dt * Reach(tight, b.Center[body]);
                 Aabb swept = tight.Expanded(grow + angular);
                 Vector3 move = b.LinearVelocity[body] * dt;
+                _shapeMotion[i] = move.Length() + angular;
                 swept = new Aabb(swept.Min + Vector3.Min(move, Vector3.Zero), swept.Max + Vector3.Max(move, Vector3.Zero));
-                RefitProxy(s.ProxyId[i], swept);
+                if (RefitProxy(s.ProxyId[i], swept)) _fatBoxStep[i] = _stepIndex;
             }
             BroadPhase.UpdatePairs(this);
         }
 
-        void RefitProxy(int proxy, in Aabb swept)
+        // True when the proxy got a new fat box.
+        bool RefitProxy(int proxy, in Aabb swept)
         {
             ref readonly Aabb fat = ref BroadPhase.FatAabb(proxy);
             Aabb wanted = swept.Expanded(CollisionMargins.AabbMargin);
             // A fat box four times the area it needs came from a fast phase that ended.
-            if (!fat.Contains(swept) || fat.SurfaceArea > 4f * wanted.SurfaceArea)
-                BroadPhase.MoveProxy(proxy, wanted);
+            if (fat.Contains(swept) && fat.SurfaceArea <= 4f * wanted.SurfaceArea) return false;
+            BroadPhase.MoveProxy(proxy, wanted);
+            return true;
         }
 
         // The farthest a shape's bounds reach from its body's centre of mass.
@@ -118,6 +134,7 @@ namespace Fulcrum
         {
             Contacts.Clear();
             _anyWoken = false;
+            _sortCount = 0;
             ContactGraph g = ContactGraph;
             int k = 0;
             while (k < g.DenseCount)
@@ -152,7 +169,9 @@ namespace Fulcrum
             if (!awakeA && !awakeB) return true;
 
             int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
-            if (!BroadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(BroadPhase.FatAabb(Shapes.ProxyId[shapeB])))
+            // Fat boxes only change when a proxy moves: check whether they parted only then.
+            if ((_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
+                !BroadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(BroadPhase.FatAabb(Shapes.ProxyId[shapeB])))
             {
                 if ((ct.Flags & ContactFlags.Touching) != 0) RecordStepEnd(c);
                 g.Destroy(c);
@@ -160,12 +179,23 @@ namespace Fulcrum
             }
             ct.Flags |= ContactFlags.Updated;
 
-            Pose poseA = ShapeWorldPose(shapeA), poseB = ShapeWorldPose(shapeB);
             bool sensor = (ct.Flags & ContactFlags.Sensor) != 0;
             ContactBuffer buffer = _contactBuffer;
-            float speculative = sensor ? 0 : SpeculativeBase + MotionBound(shapeA, shapeB, dt);
-            buffer.Clear(speculative);
-            CollisionTable.Collide(Shapes.Geometry[shapeA], poseA, Shapes.Geometry[shapeB], poseB, buffer);
+            float speculative = 0;
+            // Tight bounds farther apart than any speculative distance the pair could have
+            // (each shape's own motion bound): no point can come out.
+            float reach = sensor ? 0 : SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
+            if (Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB]))
+            {
+                if (!sensor) speculative = SpeculativeBase + MotionBound(shapeA, shapeB, dt);
+                buffer.Clear(speculative);
+                CollisionTable.Collide(Shapes.Geometry[shapeA], ShapeWorldPose(shapeA), Shapes.Geometry[shapeB], ShapeWorldPose(shapeB), buffer);
+            }
+            else
+            {
+                if (ct.FirstManifold < 0) return true;
+                buffer.Clear(0);
+            }
             if (sensor)
             {
                 if (buffer.PointCount > 0) ct.Flags |= ContactFlags.Overlapping;
@@ -173,6 +203,7 @@ namespace Fulcrum
             }
             buffer.Reduce();
             WriteManifolds(ref ct, buffer);
+            if (ct.ManifoldCount > 0) AddToSort(ct.Key, c);
 
             if (ct.ManifoldCount > 0)
             {
@@ -270,26 +301,26 @@ namespace Fulcrum
         Vector3 PointVelocity(int body, Vector3 at) =>
             Bodies.LinearVelocity[body] + Vector3.Cross(Bodies.AngularVelocity[body], at - Bodies.Center[body]);
 
+        // A contact with manifolds this step, to be listed for the solver (each contact is
+        // updated at most once per step, so at most once here).
+        void AddToSort(ulong key, int contact)
+        {
+            if (_sortCount == _sortKeys.Length)
+            {
+                Array.Resize(ref _sortKeys, 2 * _sortCount);
+                Array.Resize(ref _sortItems, 2 * _sortCount);
+            }
+            _sortKeys[_sortCount] = key;
+            _sortItems[_sortCount] = contact;
+            _sortCount++;
+        }
+
         // Lists the manifolds of this step's updated, non-sensor contacts for the solver,
         // ordered by shape pair, and measures penetration and contact count.
         void GatherManifolds()
         {
             ContactGraph g = ContactGraph;
-            int n = 0;
-            for (int k = 0; k < g.DenseCount; k++)
-            {
-                int c = g.Dense[k];
-                ref Contact ct = ref g.Contacts[c];
-                if ((ct.Flags & (ContactFlags.Updated | ContactFlags.Sensor)) != ContactFlags.Updated || ct.ManifoldCount == 0) continue;
-                if (n == _sortKeys.Length)
-                {
-                    Array.Resize(ref _sortKeys, 2 * n);
-                    Array.Resize(ref _sortItems, 2 * n);
-                }
-                _sortKeys[n] = ct.Key;
-                _sortItems[n] = c;
-                n++;
-            }
+            int n = _sortCount;
             if (n > 1) Array.Sort(_sortKeys, _sortItems, 0, n);
 
             float slop = _settings.LinearSlop;
