@@ -69,7 +69,7 @@ namespace Fulcrum.Dynamics
         /// <summary>Wide groups of the last step (for tests and profiling).</summary>
         public int WideGroupCount => _wideGroups;
 
-        /// <summary>Whether the wide (SIMD) contact path may take four-point manifolds (TGS on net10 with SIMD hardware).</summary>
+        /// <summary>Whether the wide (SIMD) contact path may take four-point manifolds (net10 with SIMD hardware).</summary>
         public bool WideContacts = true;
 
         /// <summary>Threads for the colour batches; null runs everything on the caller's thread.</summary>
@@ -422,7 +422,9 @@ namespace Fulcrum.Dynamics
                 job.JointStart = _jointStart[c];
                 int count = job.WideCount + job.ContactCount + (_jointStart[c + 1] - _jointStart[c]);
                 if (count == 0) continue;
-                if (Pool != null && c < ConstraintColoring.MaxColors) Pool.For(job, 0, count, MinChunk);
+                // A wide group is a vector's worth of manifolds: split those finer.
+                int minChunk = 2 * job.WideCount > count ? MinChunk / 8 : MinChunk;
+                if (Pool != null && c < ConstraintColoring.MaxColors) Pool.For(job, 0, count, minChunk);
                 else job.Execute(0, count);
             }
         }
@@ -457,7 +459,14 @@ namespace Fulcrum.Dynamics
                         case ColorPass.Solve: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, true); break;
                         case ColorPass.Relax: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, false); break;
                         case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(ref w, c.Bodies, c._wideBodies, g * width, c._settings.RestitutionThreshold); break;
-                        default: throw new InvalidOperationException("The wide path serves TGS only.");
+                        default:
+                        {
+                            // The position pass needs only geometry, which the scalar constraints keep.
+                            ReadOnlySpan<int> lanes = c.WideLanes(g);
+                            for (int lane = 0; lane < lanes.Length; lane++)
+                                ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
+                            break;
+                        }
                     }
                 }
 #endif

@@ -43,9 +43,9 @@ namespace Fulcrum.Dynamics
     /// friction, restitution and write-back, for a group of four-point manifolds of one colour at
     /// a time. The manifolds of a colour share no dynamic body, so the lanes are independent;
     /// the bodies' velocities are gathered into lanes before a pass and scattered back after.
-    /// Used by TGS for manifolds of four points whose two block pairs are well conditioned and
-    /// that have no rolling resistance (boxes on boxes, the bulk of stacks and piles); the rest
-    /// stay scalar. The block LCP's four cases are all evaluated and the first that holds is
+    /// Used for manifolds of four points whose two block pairs are well conditioned and that have
+    /// no rolling resistance (boxes on boxes, the bulk of stacks and piles); the rest stay scalar.
+    /// (PGS's position pass runs scalar on the same constraints: it needs only their geometry.) The block LCP's four cases are all evaluated and the first that holds is
     /// selected per lane, as the scalar enumeration does.
     /// </summary>
     internal static class ContactSolverWide
