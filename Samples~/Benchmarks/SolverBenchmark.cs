@@ -9,7 +9,8 @@ namespace Fulcrum.Benchmarks
     /// <summary>
     /// Milliseconds per step of the constraint solver's scenes: a large box pyramid and a box
     /// pile under TGS and PGS, warm starting on and off, one thread against all, and the bytes a
-    /// warm step allocates (must be 0). Sleeping is off so every step does the full work.
+    /// warm step allocates (must be 0), and the SIMD contact path against the scalar one.
+    /// Sleeping is off so every step does the full work.
     /// Medians over the measured steps (p95 beside them); the pile is measured after it settled.
     /// </summary>
     public sealed class SolverBenchmark : IBenchmark
@@ -30,12 +31,14 @@ namespace Fulcrum.Benchmarks
             output.WriteLine("|---|---|---|---|---|---|---|---|---|");
             Row(output, "pyramid", SolverType.Tgs, "default (4x4, block)", 1, w => Pyramid(w, pyramidBase), s => { }, warm, measured);
             Row(output, "pyramid", SolverType.Tgs, "default (4x4, block)", all, w => Pyramid(w, pyramidBase), s => { }, warm, measured);
+            Row(output, "pyramid", SolverType.Tgs, "SIMD path off", 1, w => Pyramid(w, pyramidBase), s => s.Scalar = true, warm, measured);
             Row(output, "pyramid", SolverType.Tgs, "warm start off", 1, w => Pyramid(w, pyramidBase), s => s.WarmStarting = false, warm, measured);
             Row(output, "pyramid", SolverType.Tgs, "block off", 1, w => Pyramid(w, pyramidBase), s => s.BlockSolver = false, warm, measured);
             Row(output, "pyramid", SolverType.Pgs, "default (4 it, 2 pos)", 1, w => Pyramid(w, pyramidBase), s => { }, warm, measured);
             Row(output, "pyramid", SolverType.Pgs, "warm start off", 1, w => Pyramid(w, pyramidBase), s => s.WarmStarting = false, warm, measured);
             Row(output, "pile", SolverType.Tgs, "default (4x4, block)", 1, w => Pile(w, pile), s => { }, warm, measured);
             Row(output, "pile", SolverType.Tgs, "default (4x4, block)", all, w => Pile(w, pile), s => { }, warm, measured);
+            Row(output, "pile", SolverType.Tgs, "SIMD path off", 1, w => Pile(w, pile), s => s.Scalar = true, warm, measured);
             Row(output, "pile", SolverType.Pgs, "default (4 it, 2 pos)", 1, w => Pile(w, pile), s => { }, warm, measured);
             Row(output, "tower 40", SolverType.Tgs, "default (4x4, block)", 1, w => Tower(w, 40), s => { }, warm, measured);
             Row(output, "tower 40", SolverType.Pgs, "default (4 it, 2 pos)", 1, w => Tower(w, 40), s => { }, warm, measured);
@@ -50,6 +53,7 @@ namespace Fulcrum.Benchmarks
             box.Settings.Threads = threads;
             edit(box);
             var w = new World(box.Settings);
+            w.SolverContextForTests.WideContacts = !box.Scalar;
             Ground(w);
             build(w);
             for (int n = 0; n < warm; n++) w.Step(1f / 60f);
@@ -74,6 +78,7 @@ namespace Fulcrum.Benchmarks
             public WorldSettings Settings;
             public bool WarmStarting { set => Settings.WarmStarting = value; }
             public bool BlockSolver { set => Settings.BlockSolver = value; }
+            public bool Scalar;
         }
 
         static void Ground(World w)

@@ -52,6 +52,28 @@ namespace Fulcrum.Tests.Solver
             Assert.That(w.MaxJointError, Is.LessThan(1e-3f));
         }
 
+        // A small sphere far from its anchor: K of the anchor point is 1000:1 anisotropic
+        // (tangential 1/m + L^2/I against radial 1/m), which punishes a stale effective mass.
+        [TestCase(SolverType.Tgs)]
+        [TestCase(SolverType.Pgs)]
+        public void Small_ball_on_a_long_ball_joint_arm_keeps_its_energy(SolverType solver)
+        {
+            var w = new World(Settings(solver));
+            const float L = 1f, theta0 = 0.1f;
+            var start = new Vector3(L * MathF.Sin(theta0), -L * MathF.Cos(theta0), 0);
+            BodyHandle ball = Sphere(w, start, 0.05f, 1f);
+            w.CreateJoint(JointDef.Ball(BodyHandle.None, ball, Vector3.Zero, -start));
+            float e0 = Energy(w, ball), emax = e0;
+            for (int n = 0; n < 1800; n++)
+            {
+                w.Step(Dt);
+                emax = MathF.Max(emax, Energy(w, ball));
+            }
+            TestContext.Out.WriteLine($"{solver}: energy after 30 s {Energy(w, ball) / e0:F4}, highest {emax / e0:F4} of start");
+            Assert.That(emax, Is.LessThan(1.01f * e0));
+            Assert.That(Energy(w, ball), Is.GreaterThan(0.97f * e0));
+        }
+
         static int Substeps(World w) => w.Settings.Solver == SolverType.Tgs ? w.Settings.Substeps : 1;
 
         static float Energy(World w, BodyHandle b)

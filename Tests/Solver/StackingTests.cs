@@ -60,6 +60,28 @@ namespace Fulcrum.Tests.Solver
         }
 
         [Test]
+        public void Tower_of_40_stays_upright_for_10_s_with_sleeping_off()
+        {
+            WorldSettings s = WorldSettings.Default;
+            s.EnableSleeping = false;
+            var w = new World(s);
+            Ground(w);
+            BodyHandle[] boxes = Tower(w, 40);
+            Vector3 top0 = w.GetBody(boxes[39]).Position;
+            float drift = 0, jitter = 0;
+            for (int n = 0; n < 600; n++)
+            {
+                w.Step(Dt);
+                Vector3 d = w.GetBody(boxes[39]).Position - top0;
+                drift = MathF.Max(drift, new Vector2(d.X, d.Z).Length());
+                if (n >= 540) foreach (BodyHandle b in boxes) jitter = MathF.Max(jitter, w.GetBody(b).LinearVelocity.Length());
+            }
+            TestContext.Out.WriteLine($"40 boxes, no sleep: top drift {drift * 1000:F2} mm, largest speed in the 10th second {jitter:E2} m/s");
+            Assert.That(drift, Is.LessThan(0.005f));
+            Assert.That(jitter, Is.LessThan(2e-3f));
+        }
+
+        [Test]
         public void Pyramid_with_20_at_the_base_stands()
         {
             var w = new World();

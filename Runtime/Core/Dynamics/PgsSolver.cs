@@ -20,7 +20,7 @@ namespace Fulcrum.Dynamics
             ref readonly WorldSettings s = ref context.Settings;
             BodyStorage bodies = context.Storage;
             Integrator.IntegrateVelocities(bodies, context.BodySlot, 1, context.BodyCount - 1, s.Gravity, dt, s.MaxLinearSpeed);
-            context.Prepare(islands);
+            context.Prepare(islands, wide: true);
             context.WarmStart();
             for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: false);
             context.StoreVelocities();
@@ -28,7 +28,7 @@ namespace Fulcrum.Dynamics
             // Restitution once the bodies have reached each other (a speculative contact closes
             // during the position update), as TGS does after its substeps.
             context.LoadVelocities();
-            context.ApplyRestitution();
+            for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
             context.StoreVelocities();
             if (s.PositionIterations > 0)
             {

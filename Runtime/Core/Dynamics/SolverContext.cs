@@ -53,6 +53,25 @@ namespace Fulcrum.Dynamics
         readonly ColorJob _colorJob;
         readonly BodyJob _bodyJob;
 
+        // Contacts of each colour not taken by the wide path, by index into Contacts.
+        int[] _scalarContacts = new int[16];
+        readonly int[] _scalarStart = new int[Buckets + 1];
+        // Wide groups (net10): per colour a range of groups of Vector<float>.Count manifolds.
+        readonly int[] _wideStart = new int[Buckets + 1];
+        int _wideGroups;
+#if NET
+        WideContact[] _wide = Array.Empty<WideContact>();
+        int[] _wideBodies = Array.Empty<int>();
+        int[] _wideSlots = Array.Empty<int>();
+        int[] _wideSource = Array.Empty<int>();
+#endif
+
+        /// <summary>Wide groups of the last step (for tests and profiling).</summary>
+        public int WideGroupCount => _wideGroups;
+
+        /// <summary>Whether the wide (SIMD) contact path may take four-point manifolds (net10 with SIMD hardware).</summary>
+        public bool WideContacts = true;
+
         /// <summary>Threads for the colour batches; null runs everything on the caller's thread.</summary>
         public WorkerPool? Pool;
 
@@ -136,7 +155,7 @@ namespace Fulcrum.Dynamics
         /// Copies the bodies' state into the solver bodies and builds every constraint of the
         /// step: colours them, then prepares them in colour order.
         /// </summary>
-        public void Prepare(IslandBuilder islands)
+        public void Prepare(IslandBuilder islands, bool wide = false)
         {
             BodyStorage s = _storage;
             Bodies[0] = new SolverBody { DeltaRotation = Quaternion.Identity };
@@ -232,6 +251,7 @@ namespace Fulcrum.Dynamics
                 ContactSolver.Prepare(ref Contacts[at], Points, firstPoint, ref m, mi, Bodies, IndexOf(m.BodyA), IndexOf(m.BodyB),
                     _contactSoftness, _fixedSoftness, warmContacts, block);
             }
+            SplitWide(wide && WideContacts);
             float warmJoints = set.WarmStarting ? 1f : 0f;
             for (int k = 0; k < nj; k++)
             {
@@ -245,6 +265,72 @@ namespace Fulcrum.Dynamics
                 RunJoint(ref j, JointSolver.Pass.Prepare);
             }
         }
+
+        // Sorts each colour's contacts into wide groups (those ContactSolverWide accepts, in
+        // groups of Vector<float>.Count, the last one padded) and the scalar rest.
+        void SplitWide(bool wide)
+        {
+            if (_scalarContacts.Length < ContactCount) _scalarContacts = new int[Math.Max(16, 2 * ContactCount)];
+            int scalar = 0;
+            _wideGroups = 0;
+#if NET
+            int width = ContactSolverWide.Width;
+            int lanes = 0;
+            if (wide && _wideSource.Length < ContactCount + Buckets * width)
+            {
+                int n = 2 * ContactCount + Buckets * width;
+                _wideSource = new int[n];
+            }
+#else
+            wide = false;
+#endif
+            for (int c = 0; c < Buckets; c++)
+            {
+                _scalarStart[c] = scalar;
+                _wideStart[c] = _wideGroups;
+                for (int k = _contactStart[c], end = _contactStart[c + 1]; k < end; k++)
+                {
+#if NET
+                    if (wide && c < ConstraintColoring.MaxColors && ContactSolverWide.Accepts(Contacts[k]))
+                    {
+                        _wideSource[lanes++] = k;
+                        continue;
+                    }
+#endif
+                    _scalarContacts[scalar++] = k;
+                }
+#if NET
+                // Close the colour's last group (padding lanes are -1).
+                while (lanes % width != 0) _wideSource[lanes++] = -1;
+                _wideGroups = lanes / width;
+#endif
+            }
+            _scalarStart[Buckets] = scalar;
+            _wideStart[Buckets] = _wideGroups;
+#if NET
+            if (_wideGroups == 0) return;
+            if (_wide.Length < _wideGroups)
+            {
+                _wide = new WideContact[2 * _wideGroups];
+                _wideBodies = new int[2 * 2 * _wideGroups * width];
+                _wideSlots = new int[2 * 4 * _wideGroups * width];
+            }
+            for (int g = 0; g < _wideGroups; g++)
+                ContactSolverWide.Load(ref _wide[g], _wideBodies, g * width, WideLanes(g), Contacts, Points, Bodies, _wideSlots);
+#endif
+        }
+
+#if NET
+        // The constraint indices of group g's used lanes.
+        ReadOnlySpan<int> WideLanes(int g)
+        {
+            int width = ContactSolverWide.Width;
+            var lanes = new ReadOnlySpan<int>(_wideSource, g * width, width);
+            int used = 0;
+            while (used < width && lanes[used] >= 0) used++;
+            return lanes.Slice(0, used);
+        }
+#endif
 
         void RunJoint(ref JointData j, JointSolver.Pass pass)
         {
@@ -329,12 +415,16 @@ namespace Fulcrum.Dynamics
             job.Pass = pass;
             for (int c = 0; c < Buckets; c++)
             {
-                job.ContactStart = _contactStart[c];
-                job.ContactCount = _contactStart[c + 1] - _contactStart[c];
+                job.WideStart = _wideStart[c];
+                job.WideCount = _wideStart[c + 1] - _wideStart[c];
+                job.ContactStart = _scalarStart[c];
+                job.ContactCount = _scalarStart[c + 1] - _scalarStart[c];
                 job.JointStart = _jointStart[c];
-                int count = job.ContactCount + (_jointStart[c + 1] - _jointStart[c]);
+                int count = job.WideCount + job.ContactCount + (_jointStart[c + 1] - _jointStart[c]);
                 if (count == 0) continue;
-                if (Pool != null && c < ConstraintColoring.MaxColors) Pool.For(job, 0, count, MinChunk);
+                // A wide group is a vector's worth of manifolds: split those finer.
+                int minChunk = 2 * job.WideCount > count ? MinChunk / 8 : MinChunk;
+                if (Pool != null && c < ConstraintColoring.MaxColors) Pool.For(job, 0, count, minChunk);
                 else job.Execute(0, count);
             }
         }
@@ -349,17 +439,44 @@ namespace Fulcrum.Dynamics
         {
             readonly SolverContext _c;
             public ColorPass Pass;
-            public int ContactStart, ContactCount, JointStart;
+            public int WideStart, WideCount, ContactStart, ContactCount, JointStart;
 
             public ColorJob(SolverContext context) => _c = context;
 
             public void Execute(int start, int end)
             {
                 SolverContext c = _c;
+#if NET
+                int wideEnd = Math.Min(end, WideCount);
+                int width = ContactSolverWide.Width;
+                for (int i = start; i < wideEnd; i++)
+                {
+                    int g = WideStart + i;
+                    ref WideContact w = ref c._wide[g];
+                    switch (Pass)
+                    {
+                        case ColorPass.WarmStart: ContactSolverWide.WarmStart(ref w, c.Bodies, c._wideBodies, g * width); break;
+                        case ColorPass.Solve: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, true); break;
+                        case ColorPass.Relax: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, false); break;
+                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(ref w, c.Bodies, c._wideBodies, g * width, c._settings.RestitutionThreshold); break;
+                        default:
+                        {
+                            // The position pass needs only geometry, which the scalar constraints keep.
+                            ReadOnlySpan<int> lanes = c.WideLanes(g);
+                            for (int lane = 0; lane < lanes.Length; lane++)
+                                ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
+                            break;
+                        }
+                    }
+                }
+#endif
+                start = Math.Max(start, WideCount) - WideCount;
+                end -= WideCount;
+                if (end <= 0) return;
                 int contactEnd = Math.Min(end, ContactCount);
                 for (int i = start; i < contactEnd; i++)
                 {
-                    ref ContactConstraint k = ref c.Contacts[ContactStart + i];
+                    ref ContactConstraint k = ref c.Contacts[c._scalarContacts[ContactStart + i]];
                     switch (Pass)
                     {
                         case ColorPass.WarmStart: ContactSolver.WarmStart(ref k, c.Points, c.Bodies); break;
@@ -442,11 +559,16 @@ namespace Fulcrum.Dynamics
         public float End()
         {
             float scale = _dt / _h;
-            for (int k = 0; k < ContactCount; k++)
+            for (int k = 0; k < _scalarStart[Buckets]; k++)
             {
-                ref ContactConstraint c = ref Contacts[k];
+                ref ContactConstraint c = ref Contacts[_scalarContacts[k]];
                 ContactSolver.Store(c, Points, ref _manifolds[c.Manifold], scale);
             }
+#if NET
+            int width = ContactSolverWide.Width;
+            for (int g = 0; g < _wideGroups; g++)
+                ContactSolverWide.Store(_wide[g], _wideSlots, g * width, WideLanes(g), Contacts, Points, _manifolds, scale);
+#endif
             float maxError = 0;
             for (int k = 0; k < JointCount; k++)
             {

@@ -5,7 +5,7 @@ namespace Fulcrum.Dynamics
     /// v3; PhysX's TGS is the same idea with a rigid bias). The step is cut into Substeps;
     /// per substep: integrate velocities, warm start, Iterations biased passes (soft rows pull
     /// positions back at a bounded rate), integrate positions, RelaxIterations unbiased passes
-    /// that remove the velocity the bias added. Restitution runs once after the substeps.
+    /// that remove the velocity the bias added. Restitution runs after the substeps (Iterations passes).
     /// Contact separations and joint errors are re-evaluated each substep from the bodies'
     /// motion, so small substeps act like small steps at the price of one narrow phase.
     /// </summary>
@@ -18,7 +18,7 @@ namespace Fulcrum.Dynamics
         public float Step(SolverContext context, IslandBuilder islands, float dt)
         {
             ref readonly WorldSettings s = ref context.Settings;
-            context.Prepare(islands);
+            context.Prepare(islands, wide: true);
             for (int sub = 0; sub < s.Substeps; sub++)
             {
                 context.IntegrateVelocities();
@@ -27,7 +27,9 @@ namespace Fulcrum.Dynamics
                 context.IntegratePositions();
                 for (int i = 0; i < s.RelaxIterations; i++) context.Solve(useBias: false);
             }
-            context.ApplyRestitution();
+            // The points of a face contact share one body: the bounce needs the same number of
+            // Gauss-Seidel passes as any other row to reach -e v0 at every point.
+            for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
             context.StoreVelocities();
             context.StorePositions();
             return context.End();

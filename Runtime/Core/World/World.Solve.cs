@@ -15,6 +15,8 @@ namespace Fulcrum
 
         internal WorkerPool? SolverPoolForTests => _workers;
 
+        internal SolverContext SolverContextForTests => _solverContext;
+
         // The solver's threads follow Settings.Threads; a change of count replaces the pool
         // (outside the steady state, so the allocation does not recur).
         WorkerPool? SolverThreads()

@@ -8,8 +8,8 @@ namespace Fulcrum.Dynamics
     /// row along n with arms rA, rB has aA = rA x n, aB = rB x n; an angular row about u has
     /// n = 0 and aA = aB = u. Joints are built from these (limits, motors, springs, the
     /// perpendicular rows of a prismatic joint), as Jolt builds them from its AxisConstraintPart
-    /// and AngleConstraintPart. The Jacobian is refreshed every substep (arms rotate); the
-    /// effective mass is kept from the start of the step.
+    /// and AngleConstraintPart. The Jacobian and the effective mass are refreshed on every pass
+    /// (arms and axes turn within the step; see JointSolver).
     /// </summary>
     internal struct AxisConstraintPart
     {

@@ -109,9 +109,13 @@ namespace Fulcrum.Dynamics
 
         static void Ball(ref JointData j, ref SolverBody a, ref SolverBody b, Pass pass, in StepParameters p, Vector3 rA, Vector3 rB, Vector3 d)
         {
+            if (NeedsMass(pass))
+            {
+                j.Point.ComputeMass(a, b, rA, rB);
+            }
             switch (pass)
             {
-                case Pass.Prepare: j.Point.ComputeMass(a, b, rA, rB); break;
+                case Pass.Prepare: break;
                 case Pass.WarmStart: j.Point.WarmStart(ref a, ref b, rA, rB); break;
                 case Pass.Solve:
                 case Pass.Relax: j.Point.Solve(ref a, ref b, rA, rB, d, p.Joint, pass == Pass.Solve); break;
@@ -124,12 +128,14 @@ namespace Fulcrum.Dynamics
             Vector3 rA, Vector3 rB, Vector3 d, Quaternion fA, Quaternion fB)
         {
             Vector3 angle = RotationLockPart.Error(fA, fB);
+            if (NeedsMass(pass))
+            {
+                j.Point.ComputeMass(a, b, rA, rB);
+                j.Lock.ComputeMass(a, b);
+            }
             switch (pass)
             {
-                case Pass.Prepare:
-                    j.Point.ComputeMass(a, b, rA, rB);
-                    j.Lock.ComputeMass(a, b);
-                    break;
+                case Pass.Prepare: break;
                 case Pass.WarmStart:
                     j.Lock.WarmStart(ref a, ref b);
                     j.Point.WarmStart(ref a, ref b, rA, rB);
@@ -161,14 +167,16 @@ namespace Fulcrum.Dynamics
             j.UpperLimit.SetAngular(-axis);
             j.Motor.SetAngular(axis);
             j.Spring.SetAngular(axis);
+            if (NeedsMass(pass))
+            {
+                j.Point.ComputeMass(a, b, rA, rB);
+                j.HingeRotation.ComputeMass(a, b, u1, u2);
+                j.Motor.ComputeMass(a, b);
+                j.LowerLimit.EffectiveMass = j.UpperLimit.EffectiveMass = j.Spring.EffectiveMass = j.Motor.EffectiveMass;
+            }
             switch (pass)
             {
-                case Pass.Prepare:
-                    j.Point.ComputeMass(a, b, rA, rB);
-                    j.HingeRotation.ComputeMass(a, b, u1, u2);
-                    j.Motor.ComputeMass(a, b);
-                    j.LowerLimit.EffectiveMass = j.UpperLimit.EffectiveMass = j.Spring.EffectiveMass = j.Motor.EffectiveMass;
-                    break;
+                case Pass.Prepare: break;
                 case Pass.WarmStart:
                     if (spring) j.Spring.WarmStart(ref a, ref b);
                     if (motor) j.Motor.WarmStart(ref a, ref b);
@@ -215,12 +223,14 @@ namespace Fulcrum.Dynamics
             j.LowerLimit.SetLinear(rA, rB, n);
             j.UpperLimit.SetLinear(rA, rB, -n);
             j.Spring.SetLinear(rA, rB, n);
+            if (NeedsMass(pass))
+            {
+                j.Length.ComputeMass(a, b);
+                j.LowerLimit.EffectiveMass = j.UpperLimit.EffectiveMass = j.Spring.EffectiveMass = j.Length.EffectiveMass;
+            }
             switch (pass)
             {
-                case Pass.Prepare:
-                    j.Length.ComputeMass(a, b);
-                    j.LowerLimit.EffectiveMass = j.UpperLimit.EffectiveMass = j.Spring.EffectiveMass = j.Length.EffectiveMass;
-                    break;
+                case Pass.Prepare: break;
                 case Pass.WarmStart:
                     if (rigid) j.Length.WarmStart(ref a, ref b);
                     if (spring) j.Spring.WarmStart(ref a, ref b);
@@ -269,15 +279,17 @@ namespace Fulcrum.Dynamics
             j.LowerLimit.SetLinear(armA, rB, axis);
             j.UpperLimit.SetLinear(armA, rB, -axis);
             j.Motor.SetLinear(armA, rB, axis);
+            if (NeedsMass(pass))
+            {
+                j.Perp1.ComputeMass(a, b);
+                j.Perp2.ComputeMass(a, b);
+                j.Motor.ComputeMass(a, b);
+                j.LowerLimit.EffectiveMass = j.UpperLimit.EffectiveMass = j.Motor.EffectiveMass;
+                j.Lock.ComputeMass(a, b);
+            }
             switch (pass)
             {
-                case Pass.Prepare:
-                    j.Perp1.ComputeMass(a, b);
-                    j.Perp2.ComputeMass(a, b);
-                    j.Motor.ComputeMass(a, b);
-                    j.LowerLimit.EffectiveMass = j.UpperLimit.EffectiveMass = j.Motor.EffectiveMass;
-                    j.Lock.ComputeMass(a, b);
-                    break;
+                case Pass.Prepare: break;
                 case Pass.WarmStart:
                     if (motor) j.Motor.WarmStart(ref a, ref b);
                     if (lower) j.LowerLimit.WarmStart(ref a, ref b);
@@ -336,14 +348,16 @@ namespace Fulcrum.Dynamics
             j.Cone.SetAngular(-swingAxis);
             j.LowerLimit.SetAngular(t);
             j.UpperLimit.SetAngular(-t);
+            if (NeedsMass(pass))
+            {
+                j.Point.ComputeMass(a, b, rA, rB);
+                j.Cone.ComputeMass(a, b);
+                j.LowerLimit.ComputeMass(a, b);
+                j.UpperLimit.EffectiveMass = j.LowerLimit.EffectiveMass;
+            }
             switch (pass)
             {
-                case Pass.Prepare:
-                    j.Point.ComputeMass(a, b, rA, rB);
-                    j.Cone.ComputeMass(a, b);
-                    j.LowerLimit.ComputeMass(a, b);
-                    j.UpperLimit.EffectiveMass = j.LowerLimit.EffectiveMass;
-                    break;
+                case Pass.Prepare: break;
                 case Pass.WarmStart:
                     if (cone) j.Cone.WarmStart(ref a, ref b);
                     if (limits)
@@ -385,6 +399,12 @@ namespace Fulcrum.Dynamics
         }
 
         // ---- shared rows and measures -----------------------------------------------------
+
+        // Effective masses follow the arms and axes as they turn within the step: a mass kept
+        // from the start of the step is wrong in direction once an arm has turned, and where
+        // K is very anisotropic (a small body far from its anchor: tangential 1/m + L^2/I
+        // against radial 1/m) that error pumps energy into the joint.
+        static bool NeedsMass(Pass pass) => pass == Pass.Prepare || pass == Pass.Solve || pass == Pass.Relax || pass == Pass.Position;
 
         /// <summary>A motor: drives J v to <paramref name="speed"/> with an impulse bounded by <paramref name="maxImpulse"/>.</summary>
         static void SolveMotor(ref AxisConstraintPart row, ref SolverBody a, ref SolverBody b, float speed, float maxImpulse) =>

@@ -1,0 +1,70 @@
+#if NET
+using System.Numerics;
+using System.Runtime.CompilerServices;
+
+namespace Fulcrum.Dynamics
+{
+    /// <summary>
+    /// Vector&lt;float&gt;.Count 3-vectors side by side (x, y and z each a SIMD register): the one
+    /// small wide-float vocabulary of <see cref="ContactSolverWide"/>.
+    /// </summary>
+    internal struct WideVector3
+    {
+        public Vector<float> X, Y, Z;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Vector<float> Dot(in WideVector3 a, in WideVector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static WideVector3 Scale(in WideVector3 a, Vector<float> s) => new WideVector3 { X = a.X * s, Y = a.Y * s, Z = a.Z * s };
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Add(in WideVector3 a)
+        {
+            X += a.X;
+            Y += a.Y;
+            Z += a.Z;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Subtract(in WideVector3 a)
+        {
+            X -= a.X;
+            Y -= a.Y;
+            Z -= a.Z;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void AddScaled(in WideVector3 a, Vector<float> s)
+        {
+            X += a.X * s;
+            Y += a.Y * s;
+            Z += a.Z * s;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void SubtractScaled(in WideVector3 a, Vector<float> s)
+        {
+            X -= a.X * s;
+            Y -= a.Y * s;
+            Z -= a.Z * s;
+        }
+
+        /// <summary>Lane <paramref name="lane"/> of a wide float, by reference (for loading and storing lanes in place).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static ref float Lane(ref Vector<float> v, int lane) => ref Unsafe.Add(ref Unsafe.As<Vector<float>, float>(ref v), lane);
+
+        /// <summary>Sets lane <paramref name="lane"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Set(int lane, Vector3 v)
+        {
+            Lane(ref X, lane) = v.X;
+            Lane(ref Y, lane) = v.Y;
+            Lane(ref Z, lane) = v.Z;
+        }
+
+        /// <summary>Lane <paramref name="lane"/>.</summary>
+        public readonly Vector3 Get(int lane) => new Vector3(X.GetElement(lane), Y.GetElement(lane), Z.GetElement(lane));
+    }
+}
+#endif
