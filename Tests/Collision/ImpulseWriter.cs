@@ -20,6 +20,7 @@ namespace Fulcrum.Tests.Collision
                 {
                     ref ContactPoint p = ref ContactManifold.Point(ref set.Manifolds[k], i);
                     p.NormalImpulse = NormalPerPoint * (1 + i);
+                    p.AppliedImpulse = p.NormalImpulse;
                     p.TangentImpulse1 = 0.1f * i;
                     p.TangentImpulse2 = -0.2f * i;
                 }

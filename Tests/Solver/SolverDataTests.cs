@@ -12,7 +12,7 @@ namespace Fulcrum.Tests.Solver
         {
             Assert.That(Unsafe.SizeOf<SolverBody>(), Is.EqualTo(96));
             Assert.That(Unsafe.SizeOf<ContactRow>(), Is.EqualTo(56));
-            Assert.That(Unsafe.SizeOf<ContactConstraintPoint>(), Is.EqualTo(72));
+            Assert.That(Unsafe.SizeOf<ContactConstraintPoint>(), Is.EqualTo(80));
         }
     }
 }

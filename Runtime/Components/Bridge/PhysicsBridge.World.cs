@@ -239,7 +239,7 @@ namespace Fulcrum.Components
                 {
                     ref Fulcrum.Collision.ContactPoint p = ref ContactManifold.Point(ref mf, i);
                     if (_wPointCount == _wPoints.Length) Array.Resize(ref _wPoints, _wPoints.Length * 2);
-                    _wPoints[_wPointCount++] = new BridgeContactPoint { Position = p.Position, Normal = mf.Normal, Separation = p.Separation, NormalImpulse = p.NormalImpulse };
+                    _wPoints[_wPointCount++] = new BridgeContactPoint { Position = p.Position, Normal = mf.Normal, Separation = p.Separation, NormalImpulse = p.AppliedImpulse };
                     n++;
                 }
             }

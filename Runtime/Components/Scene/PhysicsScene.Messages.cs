@@ -172,7 +172,7 @@ namespace Fulcrum.Components
                         point = p.Position,
                         normal = n,
                         separation = p.Separation,
-                        impulse = n * p.NormalImpulse,
+                        impulse = n * p.AppliedImpulse,
                         thisCollider = self,
                         otherCollider = other,
                     });

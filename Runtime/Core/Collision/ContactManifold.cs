@@ -19,8 +19,18 @@ namespace Fulcrum.Collision
         public float Separation;
         /// <summary>Identifies the pair of features (vertex/edge/face) that made the point; equal ids persist.</summary>
         public uint FeatureId;
-        /// <summary>Accumulated normal impulse, N s (&gt;= 0).</summary>
+        /// <summary>
+        /// Accumulated normal impulse, N s (&gt;= 0): the solver's estimate of the impulse per
+        /// step, kept for the next step's warm start. With TGS substeps it is the last substep's
+        /// impulse times the substep count, not what was applied: read
+        /// <see cref="AppliedImpulse"/> for that.
+        /// </summary>
         public float NormalImpulse;
+        /// <summary>
+        /// The normal impulse the solver actually applied at this point over the whole step
+        /// (every substep plus restitution), N s: what events and force readouts report.
+        /// </summary>
+        public float AppliedImpulse;
         /// <summary>Accumulated friction impulse along the manifold's first tangent, N s.</summary>
         public float TangentImpulse1;
         /// <summary>Accumulated friction impulse along the manifold's second tangent, N s.</summary>

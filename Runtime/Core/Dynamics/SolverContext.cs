@@ -553,6 +553,44 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>
+        /// Adds each contact point's current normal impulse to what the step has applied so
+        /// far. Called at the end of every TGS substep: the impulse of a substep is re-applied
+        /// (warm start) and corrected within the substep, so its end value is what that substep
+        /// applied. PGS never calls it; its single velocity solve applies the stored impulse.
+        /// </summary>
+        public void AccumulateApplied()
+        {
+            for (int k = 0; k < _scalarStart[Buckets]; k++)
+            {
+                ref ContactConstraint c = ref Contacts[_scalarContacts[k]];
+                for (int p = c.FirstPoint, end = c.FirstPoint + c.PointCount; p < end; p++)
+                {
+                    ref ContactConstraintPoint point = ref Points[p];
+                    point.Applied += point.Normal.Impulse;
+                    point.LastSubstep = point.Normal.Impulse;
+                }
+            }
+#if NET
+            for (int g = 0; g < _wideGroups; g++)
+            {
+                ref WideContact w = ref _wide[g];
+                Accumulate(ref w.P0);
+                Accumulate(ref w.P1);
+                Accumulate(ref w.P2);
+                Accumulate(ref w.P3);
+            }
+#endif
+        }
+
+#if NET
+        static void Accumulate(ref WidePoint p)
+        {
+            p.Applied += p.Normal.Impulse;
+            p.LastSubstep = p.Normal.Impulse;
+        }
+#endif
+
+        /// <summary>
         /// Ends the step: impulses back into the manifolds (per step: times the substep count),
         /// joint reports (force, torque, stress, error). Returns the largest joint error, m.
         /// </summary>

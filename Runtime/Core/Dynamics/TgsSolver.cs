@@ -26,6 +26,7 @@ namespace Fulcrum.Dynamics
                 for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true);
                 context.IntegratePositions();
                 for (int i = 0; i < s.RelaxIterations; i++) context.Solve(useBias: false);
+                context.AccumulateApplied();
             }
             // The points of a face contact share one body: the bounce needs the same number of
             // Gauss-Seidel passes as any other row to reach -e v0 at every point.

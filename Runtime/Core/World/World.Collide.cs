@@ -286,6 +286,7 @@ namespace Fulcrum
                     cp.Separation = buffer.Separation[start + i];
                     cp.FeatureId = buffer.Id[start + i];
                     cp.RelativeNormalVelocity = 0;
+                    cp.AppliedImpulse = 0; // the solver sets it if it runs this step
                     cp.Persisted = cache.TryTake(cp.FeatureId, out cp.NormalImpulse, out cp.TangentImpulse1, out cp.TangentImpulse2);
                     sum += x;
                     total++;

@@ -131,7 +131,7 @@ namespace Fulcrum
                 {
                     ref ContactPoint p = ref ContactManifold.Point(ref mf, i);
                     sum += p.Position;
-                    e.NormalImpulse += p.NormalImpulse;
+                    e.NormalImpulse += p.AppliedImpulse;
                     e.PointCount++;
                 }
             }

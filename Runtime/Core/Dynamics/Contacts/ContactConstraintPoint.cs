@@ -2,7 +2,7 @@ namespace Fulcrum.Dynamics
 {
     /// <summary>
     /// The normal row of one contact point, the separation the manifold reported (carried
-    /// through the step from the bodies' motion) and what restitution needs. 72 bytes.
+    /// through the step from the bodies' motion) and what restitution needs. 80 bytes.
     /// Friction lives on the manifold (<see cref="ContactConstraint"/>).
     /// </summary>
     internal struct ContactConstraintPoint
@@ -17,5 +17,9 @@ namespace Fulcrum.Dynamics
         public float MaxNormalImpulse;
         /// <summary>Index of the point in its manifold (0..3).</summary>
         public int ManifoldPoint;
+        /// <summary>Sum of the normal impulse at the end of each substep so far: what the substeps applied.</summary>
+        public float Applied;
+        /// <summary>The normal impulse at the end of the last substep (restitution adds to it afterwards).</summary>
+        public float LastSubstep;
     }
 }

@@ -73,6 +73,8 @@ namespace Fulcrum.Dynamics
                 p.RelativeVelocity = p.Normal.Velocity(n, vA, wA, vB, wB);
                 mp.RelativeNormalVelocity = p.RelativeVelocity;
                 p.MaxNormalImpulse = 0;
+                p.Applied = 0;
+                p.LastSubstep = 0;
                 p.ManifoldPoint = i;
             }
 
@@ -405,6 +407,7 @@ namespace Fulcrum.Dynamics
                 ref ContactConstraintPoint p = ref points[k];
                 ref ContactPoint mp = ref ContactManifold.Point(ref m, p.ManifoldPoint);
                 mp.NormalImpulse = scale * p.Normal.Impulse;
+                mp.AppliedImpulse = p.Applied + p.Normal.Impulse - p.LastSubstep;
                 mp.TangentImpulse1 = share * c.Friction1.Impulse;
                 mp.TangentImpulse2 = share * c.Friction2.Impulse;
                 mp.RelativeNormalVelocity = p.RelativeVelocity;

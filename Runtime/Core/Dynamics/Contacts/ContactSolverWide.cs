@@ -17,6 +17,7 @@ namespace Fulcrum.Dynamics
     {
         public WideRow Normal;
         public Vector<float> Separation, RelativeVelocity, MaxNormalImpulse;
+        public Vector<float> Applied, LastSubstep;   // see ContactConstraintPoint
     }
 
     /// <summary>
@@ -377,6 +378,7 @@ namespace Fulcrum.Dynamics
                     ref readonly WidePoint wp = ref k == 0 ? ref w.P0 : ref k == 1 ? ref w.P1 : ref k == 2 ? ref w.P2 : ref w.P3;
                     ref ContactPoint mp = ref ContactManifold.Point(ref m, points[laneSlots[4 * (groupOffset + lane) + k]].ManifoldPoint);
                     mp.NormalImpulse = scale * wp.Normal.Impulse.GetElement(lane);
+                    mp.AppliedImpulse = wp.Applied.GetElement(lane) + wp.Normal.Impulse.GetElement(lane) - wp.LastSubstep.GetElement(lane);
                     mp.TangentImpulse1 = share * f1;
                     mp.TangentImpulse2 = share * f2;
                     mp.RelativeNormalVelocity = wp.RelativeVelocity.GetElement(lane);
