@@ -34,6 +34,9 @@ static class SweepCommand
         string outDir = a.String("--out") ?? "sweep-" + Path.GetFileNameWithoutExtension(path);
         if (outDir.Length == 0) throw new UsageException("--out: expected a directory");
         WorldSettings settings = SceneSetup.Settings(a);
+        // A sweep prices solver settings: sleeping would make a settled scene cost nothing
+        // whatever the setting, so every run (the reference too) keeps its bodies awake.
+        settings.EnableSleeping = false;
         SceneDocument doc = SceneSetup.Load(path);
         if (a.PositiveFloat("--dt") is float dt) doc.Timestep = dt;
         int steps = SceneSetup.Steps(a, doc.Timestep, DefaultSeconds);
