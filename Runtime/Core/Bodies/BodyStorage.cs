@@ -36,8 +36,6 @@ namespace Fulcrum
         public Quaternion[] PreviousRotation = Array.Empty<Quaternion>();
 
         // Cold: touched on creation, edits and rare events.
-        public int[] Generation = Array.Empty<int>();
-        public int[] ActiveIndex = Array.Empty<int>();               // position in Active, -1 when the slot is free
         public float[] Mass = Array.Empty<float>();
         public Mat3[] InertiaLocal = Array.Empty<Mat3>();            // about the centre, body frame
         public float[] MassOverride = Array.Empty<float>();          // 0: from shapes
@@ -52,53 +50,35 @@ namespace Fulcrum
         public string?[] Name = Array.Empty<string?>();
         public ulong[] UserData = Array.Empty<ulong>();
 
-        /// <summary>Slots of live bodies, densely packed; order changes on removal (swap-remove).</summary>
-        public int[] Active = Array.Empty<int>();
+        readonly SlotAllocator _slots = new SlotAllocator();
+
+        /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
+        public int[] Generation => _slots.Generation;
+        /// <summary>Position of each slot in <see cref="Active"/>, -1 when free.</summary>
+        public int[] ActiveIndex => _slots.ActiveIndex;
+        /// <summary>Live slots, densely packed; order changes on removal (swap-remove).</summary>
+        public int[] Active => _slots.Active;
         /// <summary>How many entries of <see cref="Active"/> are used.</summary>
-        public int ActiveCount;
-
-        int _capacity;
-        int _slotCount;          // slots ever used
-        int[] _free = Array.Empty<int>();
-        int _freeCount;
-
+        public int ActiveCount => _slots.ActiveCount;
         /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
-        public int SlotCount => _slotCount;
+        public int SlotCount => _slots.SlotCount;
 
         /// <summary>True when the handle names a live body.</summary>
-        public bool IsLive(BodyHandle h) =>
-            h.Generation != 0 && (uint)h.Index < (uint)_slotCount && Generation[h.Index] == h.Generation && ActiveIndex[h.Index] >= 0;
+        public bool IsLive(BodyHandle h) => _slots.IsLive(h.Index, h.Generation);
 
         /// <summary>Takes a free slot (growing the arrays if needed) and marks it live.</summary>
         public int Allocate()
         {
-            int slot;
-            if (_freeCount > 0) slot = _free[--_freeCount];
-            else
-            {
-                if (_slotCount == _capacity) Grow(Math.Max(16, _capacity * 2));
-                slot = _slotCount++;
-            }
-            Generation[slot]++;
-            if (Generation[slot] <= 0) Generation[slot] = 1; // wrapped after 2^31 reuses
-            ActiveIndex[slot] = ActiveCount;
-            Active[ActiveCount++] = slot;
+            int slot = _slots.Allocate(out bool grew);
+            if (grew) Grow(_slots.Capacity);
             return slot;
         }
 
         /// <summary>Returns a slot to the free list; its handle goes stale.</summary>
         public void Release(int slot)
         {
-            int at = ActiveIndex[slot];
-            int last = Active[--ActiveCount];
-            Active[at] = last;
-            ActiveIndex[last] = at;
-            ActiveIndex[slot] = -1;
-            Generation[slot]++;
-            if (Generation[slot] <= 0) Generation[slot] = 1;
+            _slots.Release(slot);
             Name[slot] = null;
-            if (_freeCount == _free.Length) Array.Resize(ref _free, Math.Max(16, _free.Length * 2));
-            _free[_freeCount++] = slot;
         }
 
         void Grow(int capacity)
@@ -122,8 +102,6 @@ namespace Fulcrum
             Array.Resize(ref GravityScale, capacity);
             Array.Resize(ref PreviousPosition, capacity);
             Array.Resize(ref PreviousRotation, capacity);
-            Array.Resize(ref Generation, capacity);
-            Array.Resize(ref ActiveIndex, capacity);
             Array.Resize(ref Mass, capacity);
             Array.Resize(ref InertiaLocal, capacity);
             Array.Resize(ref MassOverride, capacity);
@@ -137,9 +115,6 @@ namespace Fulcrum
             Array.Resize(ref FirstShape, capacity);
             Array.Resize(ref Name, capacity);
             Array.Resize(ref UserData, capacity);
-            Array.Resize(ref Active, capacity);
-            for (int i = _capacity; i < capacity; i++) ActiveIndex[i] = -1;
-            _capacity = capacity;
         }
 
         /// <summary>Refreshes the world inverse inertia of a slot from its rotation.</summary>

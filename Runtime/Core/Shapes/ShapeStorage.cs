@@ -25,40 +25,27 @@ namespace Fulcrum
         public ulong[] UserData = Array.Empty<ulong>();
         public Aabb[] WorldAabb = Array.Empty<Aabb>();         // tight bounds at the current pose
         public int[] ProxyId = Array.Empty<int>();             // broad-phase proxy, -1 when none
-        public int[] Generation = Array.Empty<int>();
-        public int[] ActiveIndex = Array.Empty<int>();
+        readonly SlotAllocator _slots = new SlotAllocator();
 
-        /// <summary>Live shape slots, densely packed.</summary>
-        public int[] Active = Array.Empty<int>();
+        /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
+        public int[] Generation => _slots.Generation;
+        /// <summary>Position of each slot in <see cref="Active"/>, -1 when free.</summary>
+        public int[] ActiveIndex => _slots.ActiveIndex;
+        /// <summary>Live slots, densely packed; order changes on removal (swap-remove).</summary>
+        public int[] Active => _slots.Active;
         /// <summary>How many entries of <see cref="Active"/> are used.</summary>
-        public int ActiveCount;
-
-        int _capacity;
-        int _slotCount;
-        int[] _free = Array.Empty<int>();
-        int _freeCount;
-
-        /// <summary>One past the highest slot ever used.</summary>
-        public int SlotCount => _slotCount;
+        public int ActiveCount => _slots.ActiveCount;
+        /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
+        public int SlotCount => _slots.SlotCount;
 
         /// <summary>True when the handle names a live shape.</summary>
-        public bool IsLive(ShapeHandle h) =>
-            h.Generation != 0 && (uint)h.Index < (uint)_slotCount && Generation[h.Index] == h.Generation && ActiveIndex[h.Index] >= 0;
+        public bool IsLive(ShapeHandle h) => _slots.IsLive(h.Index, h.Generation);
 
         /// <summary>Takes a free slot and marks it live.</summary>
         public int Allocate()
         {
-            int slot;
-            if (_freeCount > 0) slot = _free[--_freeCount];
-            else
-            {
-                if (_slotCount == _capacity) Grow(Math.Max(16, _capacity * 2));
-                slot = _slotCount++;
-            }
-            Generation[slot]++;
-            if (Generation[slot] <= 0) Generation[slot] = 1;
-            ActiveIndex[slot] = ActiveCount;
-            Active[ActiveCount++] = slot;
+            int slot = _slots.Allocate(out bool grew);
+            if (grew) Grow(_slots.Capacity);
             ProxyId[slot] = -1;
             return slot;
         }
@@ -66,16 +53,8 @@ namespace Fulcrum
         /// <summary>Frees a slot; its handle goes stale.</summary>
         public void Release(int slot)
         {
-            int at = ActiveIndex[slot];
-            int last = Active[--ActiveCount];
-            Active[at] = last;
-            ActiveIndex[last] = at;
-            ActiveIndex[slot] = -1;
-            Generation[slot]++;
-            if (Generation[slot] <= 0) Generation[slot] = 1;
+            _slots.Release(slot);
             Geometry[slot] = default;
-            if (_freeCount == _free.Length) Array.Resize(ref _free, Math.Max(16, _free.Length * 2));
-            _free[_freeCount++] = slot;
         }
 
         void Grow(int capacity)
@@ -95,11 +74,6 @@ namespace Fulcrum
             Array.Resize(ref UserData, capacity);
             Array.Resize(ref WorldAabb, capacity);
             Array.Resize(ref ProxyId, capacity);
-            Array.Resize(ref Generation, capacity);
-            Array.Resize(ref ActiveIndex, capacity);
-            Array.Resize(ref Active, capacity);
-            for (int i = _capacity; i < capacity; i++) ActiveIndex[i] = -1;
-            _capacity = capacity;
         }
     }
 }

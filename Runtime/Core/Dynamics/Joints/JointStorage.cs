@@ -10,25 +10,26 @@ namespace Fulcrum.Dynamics
     internal sealed class JointStorage
     {
         public JointData[] Data = Array.Empty<JointData>();
-        public int[] Generation = Array.Empty<int>();
-        public int[] ActiveIndex = Array.Empty<int>();
         public string?[] Name = Array.Empty<string?>();
         /// <summary>Next edge in the body's list, per edge (2 per joint); -1 ends it.</summary>
         public int[] NextEdge = Array.Empty<int>();
         /// <summary>First edge of each body slot's list, -1 for none.</summary>
         public int[] FirstEdge = Array.Empty<int>();
 
-        /// <summary>Live joint slots, densely packed (order changes on removal).</summary>
-        public int[] Active = Array.Empty<int>();
-        public int ActiveCount;
+        readonly SlotAllocator _slots = new SlotAllocator();
 
-        int _capacity;
-        int _slotCount;
-        int[] _free = Array.Empty<int>();
-        int _freeCount;
+        /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
+        public int[] Generation => _slots.Generation;
+        /// <summary>Position of each slot in <see cref="Active"/>, -1 when free.</summary>
+        public int[] ActiveIndex => _slots.ActiveIndex;
+        /// <summary>Live slots, densely packed; order changes on removal (swap-remove).</summary>
+        public int[] Active => _slots.Active;
+        /// <summary>How many entries of <see cref="Active"/> are used.</summary>
+        public int ActiveCount => _slots.ActiveCount;
+        /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
+        public int SlotCount => _slots.SlotCount;
 
-        public bool IsLive(JointHandle h) =>
-            h.Generation != 0 && (uint)h.Index < (uint)_slotCount && Generation[h.Index] == h.Generation && ActiveIndex[h.Index] >= 0;
+        public bool IsLive(JointHandle h) => _slots.IsLive(h.Index, h.Generation);
 
         /// <summary>Makes sure every body slot below <paramref name="bodySlots"/> has an edge list head.</summary>
         public void EnsureBodies(int bodySlots)
@@ -41,17 +42,8 @@ namespace Fulcrum.Dynamics
 
         public int Allocate()
         {
-            int slot;
-            if (_freeCount > 0) slot = _free[--_freeCount];
-            else
-            {
-                if (_slotCount == _capacity) Grow(Math.Max(16, _capacity * 2));
-                slot = _slotCount++;
-            }
-            Generation[slot]++;
-            if (Generation[slot] <= 0) Generation[slot] = 1;
-            ActiveIndex[slot] = ActiveCount;
-            Active[ActiveCount++] = slot;
+            int slot = _slots.Allocate(out bool grew);
+            if (grew) Grow(_slots.Capacity);
             return slot;
         }
 
@@ -91,29 +83,16 @@ namespace Fulcrum.Dynamics
             ref JointData j = ref Data[slot];
             if (j.BodyA >= 0) Unlink(j.BodyA, 2 * slot);
             if (j.BodyB >= 0) Unlink(j.BodyB, 2 * slot + 1);
-            int at = ActiveIndex[slot];
-            int last = Active[--ActiveCount];
-            Active[at] = last;
-            ActiveIndex[last] = at;
-            ActiveIndex[slot] = -1;
-            Generation[slot]++;
-            if (Generation[slot] <= 0) Generation[slot] = 1;
+            _slots.Release(slot);
             Name[slot] = null;
             Data[slot] = default;
-            if (_freeCount == _free.Length) Array.Resize(ref _free, Math.Max(16, _free.Length * 2));
-            _free[_freeCount++] = slot;
         }
 
         void Grow(int capacity)
         {
             Array.Resize(ref Data, capacity);
-            Array.Resize(ref Generation, capacity);
-            Array.Resize(ref ActiveIndex, capacity);
             Array.Resize(ref Name, capacity);
             Array.Resize(ref NextEdge, 2 * capacity);
-            Array.Resize(ref Active, capacity);
-            for (int i = _capacity; i < capacity; i++) ActiveIndex[i] = -1;
-            _capacity = capacity;
         }
     }
 }

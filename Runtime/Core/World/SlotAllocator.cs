@@ -1,0 +1,87 @@
+using System;
+
+namespace Fulcrum
+{
+    /// <summary>
+    /// Slots with generations, a free list and a dense list of live slots: the bookkeeping
+    /// behind every handle type (bodies, shapes, joints). A slot's generation changes when it
+    /// is taken and when it is freed, so a handle from before either no longer matches; live
+    /// slots are also packed in <see cref="Active"/> so loops walk only real objects.
+    /// The owner keeps its own per-slot arrays at <see cref="Capacity"/> (see <see cref="Allocate"/>).
+    /// </summary>
+    internal sealed class SlotAllocator
+    {
+        int[] _free = Array.Empty<int>();
+        int _freeCount;
+
+        /// <summary>Generation of each slot; 0 only for a slot never used.</summary>
+        public int[] Generation = Array.Empty<int>();
+        /// <summary>Position of each slot in <see cref="Active"/>, -1 when the slot is free.</summary>
+        public int[] ActiveIndex = Array.Empty<int>();
+        /// <summary>Live slots, densely packed; order changes on removal (swap-remove).</summary>
+        public int[] Active = Array.Empty<int>();
+        /// <summary>How many entries of <see cref="Active"/> are used.</summary>
+        public int ActiveCount;
+        /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
+        public int SlotCount;
+        /// <summary>Length of the per-slot arrays.</summary>
+        public int Capacity;
+
+        /// <summary>True when <paramref name="index"/>/<paramref name="generation"/> name a live slot.</summary>
+        public bool IsLive(int index, int generation) =>
+            generation != 0 && (uint)index < (uint)SlotCount && Generation[index] == generation && ActiveIndex[index] >= 0;
+
+        /// <summary>
+        /// Takes a free slot and marks it live. When the slots ran out, capacity doubles and
+        /// <paramref name="grew"/> tells the owner to resize its own arrays to <see cref="Capacity"/>.
+        /// </summary>
+        public int Allocate(out bool grew)
+        {
+            grew = false;
+            int slot;
+            if (_freeCount > 0) slot = _free[--_freeCount];
+            else
+            {
+                if (SlotCount == Capacity)
+                {
+                    Grow(Math.Max(16, Capacity * 2));
+                    grew = true;
+                }
+                slot = SlotCount++;
+            }
+            NextGeneration(slot);
+            ActiveIndex[slot] = ActiveCount;
+            Active[ActiveCount++] = slot;
+            return slot;
+        }
+
+        /// <summary>Frees a live slot; handles to it go stale.</summary>
+        public void Release(int slot)
+        {
+            int at = ActiveIndex[slot];
+            int last = Active[--ActiveCount];
+            Active[at] = last;
+            ActiveIndex[last] = at;
+            ActiveIndex[slot] = -1;
+            NextGeneration(slot);
+            if (_freeCount == _free.Length) Array.Resize(ref _free, Math.Max(16, _free.Length * 2));
+            _free[_freeCount++] = slot;
+        }
+
+        // Generations skip 0 ("none") when they wrap after 2^31 reuses.
+        void NextGeneration(int slot)
+        {
+            Generation[slot]++;
+            if (Generation[slot] <= 0) Generation[slot] = 1;
+        }
+
+        void Grow(int capacity)
+        {
+            Array.Resize(ref Generation, capacity);
+            Array.Resize(ref ActiveIndex, capacity);
+            Array.Resize(ref Active, capacity);
+            for (int i = Capacity; i < capacity; i++) ActiveIndex[i] = -1;
+            Capacity = capacity;
+        }
+    }
+}
