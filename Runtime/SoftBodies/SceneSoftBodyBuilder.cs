@@ -18,7 +18,10 @@ namespace Fulcrum.SoftBodies
         /// vertex, say) throws a <see cref="SceneException"/> naming the JSON path; soft bodies
         /// created before it are destroyed again, so the world is left as it was.
         /// </summary>
-        public static SoftBodyHandle[] Build(SceneInstance scene)
+        /// <param name="scene">The built scene.</param>
+        /// <param name="substeps">XPBD substeps for every soft body; 0 keeps the automatic choice (one per 1/600 s).</param>
+        /// <param name="iterations">XPBD iterations per substep; 0 keeps the default (1).</param>
+        public static SoftBodyHandle[] Build(SceneInstance scene, int substeps = 0, int iterations = 0)
         {
             if (scene == null) throw new ArgumentNullException(nameof(scene));
             var handles = new SoftBodyHandle[scene.SoftBodies.Count];
@@ -26,7 +29,12 @@ namespace Fulcrum.SoftBodies
             try
             {
                 for (; made < handles.Length; made++)
-                    handles[made] = scene.World.CreateSoftBody(Definition(scene, made));
+                {
+                    SoftBodyDef def = Definition(scene, made);
+                    if (substeps > 0) def.Substeps = substeps;
+                    if (iterations > 0) def.Iterations = iterations;
+                    handles[made] = scene.World.CreateSoftBody(def);
+                }
             }
             catch (ArgumentException e)
             {

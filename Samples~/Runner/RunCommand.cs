@@ -25,7 +25,9 @@ static class RunCommand
         SceneSetup.ApplySolverFlags(doc, a);
         int steps = SceneSetup.Steps(a, doc.Timestep, DefaultSeconds);
         SceneInstance scene = SceneSetup.Build(path, doc, settings);
-        ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out string? softNote);
+        // Explicit --substeps/--iterations reach the soft bodies' XPBD solver too.
+        ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out string? softNote,
+            a.Has("--substeps") ? doc.Solver.Substeps : 0, a.Has("--iterations") ? doc.Solver.Iterations : 0);
 
         SceneSolver s = doc.Solver;
         output.WriteLine($"scene: {path} ({CheckCommand.Count(scene.BodyHandles.Count, "body", "bodies")}, {CheckCommand.Count(scene.Joints.Count, "joint", "joints")}, {CheckCommand.Count(scene.SoftBodies.Count, "soft body", "soft bodies")})");

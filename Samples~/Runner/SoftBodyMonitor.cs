@@ -30,12 +30,16 @@ public interface ISoftBodyMonitor
 /// </summary>
 public static class SoftBodySupport
 {
-    /// <summary>Creates the scene's soft bodies and returns a monitor over them; null when there are none.</summary>
-    public static ISoftBodyMonitor? Attach(SceneInstance scene, out string? note)
+    /// <summary>
+    /// Creates the scene's soft bodies and returns a monitor over them; null when there are
+    /// none. <paramref name="substeps"/> and <paramref name="iterations"/> (0: the soft bodies'
+    /// own defaults) set their XPBD solver, as the runner's --substeps and --iterations do.
+    /// </summary>
+    public static ISoftBodyMonitor? Attach(SceneInstance scene, out string? note, int substeps = 0, int iterations = 0)
     {
         note = null;
         if (scene.SoftBodies.Count == 0) return null;
-        return new Monitor(scene.World, SceneSoftBodyBuilder.Build(scene));
+        return new Monitor(scene.World, SceneSoftBodyBuilder.Build(scene, substeps, iterations));
     }
 
     sealed class Monitor : ISoftBodyMonitor

@@ -25,6 +25,13 @@ static class SweepCommand
     public const float DefaultSeconds = 2f;
     public const int ReferenceIterations = 16, ReferenceSubsteps = 8;
 
+    /// <summary>
+    /// The soft bodies' reference: XPBD converges with smaller substeps rather than more
+    /// iterations (Macklin et al. 2019, "Small Steps in Physics Simulation"), so 60 substeps
+    /// (1/3600 s at 60 Hz) of 2 iterations each.
+    /// </summary>
+    public const int ReferenceSoftSubsteps = 60, ReferenceSoftIterations = 2;
+
     public static int Run(Arguments a, TextWriter output)
     {
         string path = a.Scene();
@@ -44,14 +51,16 @@ static class SweepCommand
         // The reference run doubles as the check that the scene builds at all.
         SceneDocument refDoc = With(doc, SolverType.Tgs, ReferenceIterations, ReferenceSubsteps);
         SceneInstance reference = SceneSetup.Build(path, refDoc, settings);
-        SoftBodySupport.Attach(reference, out string? softNote);
+        ISoftBodyMonitor? refSoft = SoftBodySupport.Attach(reference, out string? softNote, ReferenceSoftSubsteps, ReferenceSoftIterations);
         List<int> dynamic = DynamicBodies(reference);
-        if ((long)steps * dynamic.Count > 20_000_000)
-            throw new UsageException($"--steps: {steps} steps x {dynamic.Count} bodies is too long a reference to keep; use fewer steps");
-        var refPositions = new Vector3[steps * dynamic.Count];
-        SceneRun.Run(reference, steps, doc.Timestep, afterStep: n => Record(reference, dynamic, refPositions, n));
+        int tracked = dynamic.Count + SoftPointCount(refSoft);
+        if ((long)steps * tracked > 20_000_000)
+            throw new UsageException($"--steps: {steps} steps x {tracked} tracked points is too long a reference to keep; use fewer steps");
+        var refPositions = new Vector3[steps * tracked];
+        SceneRun.Run(reference, steps, doc.Timestep, afterStep: n => Record(reference, dynamic, refSoft, refPositions, n));
 
-        output.WriteLine($"sweep: {path}, {steps} steps of {SceneSetup.F(doc.Timestep)} s, reference tgs {ReferenceIterations}x{ReferenceSubsteps}");
+        output.WriteLine($"sweep: {path}, {steps} steps of {SceneSetup.F(doc.Timestep)} s, reference tgs {ReferenceIterations}x{ReferenceSubsteps}" +
+                         (refSoft != null ? $", soft bodies XPBD {ReferenceSoftSubsteps} substeps x {ReferenceSoftIterations} iterations; swept substeps and iterations set the soft bodies' XPBD solver too" : ""));
         if (softNote != null) output.WriteLine("note: " + softNote);
 
         var points = new List<SweepPoint>();
@@ -60,10 +69,10 @@ static class SweepCommand
         foreach (int sub in solver == SolverType.Pgs ? new List<int> { 1 } : substeps)
         {
             SceneInstance scene = SceneSetup.Build(path, With(doc, solver, it, sub), settings);
-            ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out _);
+            ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out _, sub, it);
             double sum = 0;
-            RunResult r = SceneRun.Run(scene, steps, doc.Timestep, soft, afterStep: n => sum += SquaredDistance(scene, dynamic, refPositions, n));
-            float? referenceError = dynamic.Count > 0 ? (float)Math.Sqrt(sum / ((double)steps * dynamic.Count)) : null;
+            RunResult r = SceneRun.Run(scene, steps, doc.Timestep, soft, afterStep: n => sum += SquaredDistance(scene, dynamic, soft, refPositions, n));
+            float? referenceError = tracked > 0 ? (float)Math.Sqrt(sum / ((double)steps * tracked)) : null;
             points.Add(new SweepPoint(solver, it, sub, doc.Timestep, r.MedianMs, r.MaxPenetration, r.MaxJointError, referenceError, r.EnergyDrift, r.VolumeError));
         }
 
@@ -101,18 +110,40 @@ static class SweepCommand
         return list;
     }
 
-    static void Record(SceneInstance scene, List<int> dynamic, Vector3[] into, int step)
+    // Tracked points: every dynamic body's origin, then each soft body's centroid and probes.
+    static int SoftPointCount(ISoftBodyMonitor? soft)
     {
-        int row = (step - 1) * dynamic.Count;
-        for (int k = 0; k < dynamic.Count; k++) into[row + k] = scene.World.GetBody(scene.BodyHandles[dynamic[k]]).Position;
+        int n = 0;
+        for (int s = 0; soft != null && s < soft.Count; s++) n += 1 + soft.Sample(s).Probes.Length;
+        return n;
     }
 
-    static double SquaredDistance(SceneInstance scene, List<int> dynamic, Vector3[] reference, int step)
+    static void Points(SceneInstance scene, List<int> dynamic, ISoftBodyMonitor? soft, Span<Vector3> into)
     {
-        int row = (step - 1) * dynamic.Count;
+        int k = 0;
+        foreach (int body in dynamic) into[k++] = scene.World.GetBody(scene.BodyHandles[body]).Position;
+        for (int s = 0; soft != null && s < soft.Count; s++)
+        {
+            SoftBodySample sample = soft.Sample(s);
+            into[k++] = sample.Center;
+            foreach (Vector3 probe in sample.Probes) into[k++] = probe;
+        }
+    }
+
+    static void Record(SceneInstance scene, List<int> dynamic, ISoftBodyMonitor? soft, Vector3[] into, int step)
+    {
+        int tracked = dynamic.Count + SoftPointCount(soft);
+        Points(scene, dynamic, soft, into.AsSpan((step - 1) * tracked, tracked));
+    }
+
+    static double SquaredDistance(SceneInstance scene, List<int> dynamic, ISoftBodyMonitor? soft, Vector3[] reference, int step)
+    {
+        int tracked = dynamic.Count + SoftPointCount(soft);
+        Span<Vector3> now = tracked <= 256 ? stackalloc Vector3[tracked] : new Vector3[tracked];
+        Points(scene, dynamic, soft, now);
+        int row = (step - 1) * tracked;
         double sum = 0;
-        for (int k = 0; k < dynamic.Count; k++)
-            sum += Vector3.DistanceSquared(scene.World.GetBody(scene.BodyHandles[dynamic[k]]).Position, reference[row + k]);
+        for (int k = 0; k < tracked; k++) sum += Vector3.DistanceSquared(now[k], reference[row + k]);
         return sum;
     }
 

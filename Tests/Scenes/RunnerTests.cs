@@ -199,6 +199,22 @@ namespace Fulcrum.Tests.Scenes
         }
 
         [Test]
+        public void Soft_sweep_settings_reach_the_xpbd_solver_and_the_soft_reference_row_has_zero_error()
+        {
+            string outDir = Path.Combine(_dir, "soft-sweep");
+            (int code, _, string error) = Fulcrum("sweep", Scene("jelly"), "--steps", "30", "--solver", "tgs",
+                "--iterations", "1,2", "--substeps", "4,60", "--out", outDir);
+            Assert.That((code, error), Is.EqualTo((0, "")));
+            string[] rows = Lines(File.ReadAllText(Path.Combine(outDir, "sweep.csv")));
+            string[] coarse = rows[1].Split(','), reference = rows[4].Split(',');
+            Assert.That((coarse[1], coarse[2], reference[1], reference[2]), Is.EqualTo(("1", "4", "2", "60")));
+            // The jelly scene's rigid bodies are static, so only the soft settings differ.
+            Assert.That(F(reference[7]), Is.EqualTo(0f), "2 iterations x 60 substeps is the soft reference itself");
+            Assert.That(F(coarse[7]), Is.GreaterThan(1e-3f), "4 substeps lands somewhere else");
+            Assert.That(F(coarse[9]), Is.GreaterThan(0f), "volume error applies to soft scenes");
+        }
+
+        [Test]
         public void Sweep_writes_csv_and_svg_and_the_reference_setting_has_zero_error()
         {
             string outDir = Path.Combine(_dir, "sweep");
