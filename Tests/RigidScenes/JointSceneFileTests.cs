@@ -120,13 +120,16 @@ namespace Fulcrum.Tests.RigidScenes
             Assert.That(middleSpeed, Is.LessThan(0.15f));
         }
 
-        // 5 ragdolls of 11 capsules and spheres (cone-twist spine, neck, shoulders and hips;
-        // hinged elbows and knees with limits) dropped lying on each other.
+        // 5 ragdolls of 11 capsules (cone-twist spine, neck, shoulders and hips; hinged elbows
+        // and knees with limits) dropped lying on each other. They settle but do not sleep: a
+        // few light limbs resting at a joint limit on the ground keep rocking in place (about
+        // 1 rad/s, at 4x4, 4x8, 8x4 and 2x16 alike; without the hinge limits all but one
+        // ragdoll sleep), so what is asserted is the settled pile, not sleep.
         [Test]
         public void Five_ragdolls_dropped_in_a_pile_keep_their_joints_and_come_to_rest()
         {
             SceneInstance scene = Build("ragdolls");
-            float worstError = 0, lastSecondSpeed = 0;
+            float worstError = 0, lastSecondSpeed = 0, lastSecondSpin = 0;
             int asleepAt = -1;
             const int steps = 900;
             for (int n = 0; n < steps; n++)
@@ -136,15 +139,19 @@ namespace Fulcrum.Tests.RigidScenes
                 if (!AllFinite(scene)) Assert.Fail($"not finite at step {n}");
                 if (asleepAt < 0 && scene.World.AwakeBodyCount == 0) asleepAt = n;
                 if (n >= steps - 60)
-                    foreach (BodyHandle h in scene.BodyHandles) lastSecondSpeed = MathF.Max(lastSecondSpeed, scene.World.GetBody(h).LinearVelocity.Length());
+                    foreach (BodyHandle h in scene.BodyHandles)
+                    {
+                        lastSecondSpeed = MathF.Max(lastSecondSpeed, scene.World.GetBody(h).LinearVelocity.Length());
+                        lastSecondSpin = MathF.Max(lastSecondSpin, scene.World.GetBody(h).AngularVelocity.Length());
+                    }
             }
             float lowest = float.MaxValue;
             foreach (BodyHandle h in scene.BodyHandles)
                 if (scene.World.GetBody(h).Type == BodyType.Dynamic) lowest = MathF.Min(lowest, scene.World.GetBody(h).Position.Y);
-            TestContext.Out.WriteLine($"ragdolls: worst joint error {worstError * 1000:F2} mm, joint error at 15 s {scene.World.MaxJointError * 1000:F2} mm, top speed in the 15th second {lastSecondSpeed:F3} m/s, awake at 15 s {scene.World.AwakeBodyCount}, all asleep at {(asleepAt < 0 ? "never" : (asleepAt * scene.Timestep).ToString("F2"))} s, lowest body centre {lowest:F3} m");
+            TestContext.Out.WriteLine($"ragdolls: worst joint error {worstError * 1000:F2} mm, joint error at 15 s {scene.World.MaxJointError * 1000:F2} mm, top speed in the 15th second {lastSecondSpeed:F3} m/s and {lastSecondSpin:F3} rad/s, awake at 15 s {scene.World.AwakeBodyCount}, all asleep at {(asleepAt < 0 ? "never" : (asleepAt * scene.Timestep).ToString("F2"))} s, lowest body centre {lowest:F3} m");
             Assert.That(worstError, Is.LessThan(0.025f));
-            Assert.That(lastSecondSpeed, Is.LessThan(0.5f), "the pile has settled (it does not sleep: see RESULTS.md)");
-            Assert.That(lowest, Is.GreaterThan(0.04f), "nothing sank through the ground");
+            Assert.That(lastSecondSpeed, Is.LessThan(0.3f), "the pile has settled (it does not sleep: see RESULTS.md)");
+            Assert.That(lowest, Is.GreaterThan(0.035f), "nothing sank through the ground");
         }
     }
 }
