@@ -1,0 +1,42 @@
+using System;
+using Fulcrum.SoftBodies;
+using NUnit.Framework;
+
+namespace Fulcrum.Tests.SoftScenes
+{
+    public class SlimeTests
+    {
+        // slime.json: a 0.3 m cube of E = 1e3 Pa, nu = 0.495 set on the ground. The scene format
+        // has no plasticity field, so the file's slime is elastic; rho g h / E = 2.9, so it slumps.
+        const float Size = 0.3f;
+
+        static float Height(SoftSceneRun run) => run.Body.GetProbe(0).Y - run.Body.GetProbe(1).Y;
+
+        [Test]
+        public void Elastic_slime_on_the_ground_flattens_and_keeps_its_volume()
+        {
+            SoftSceneRun run = SoftSceneRun.Load("slime");
+            float g = 9.81f, mass = run.Body.TotalMass, startY = run.Body.ComputeStats().Centroid.Y;
+            int steps = run.StepsIn(3f), tail = run.StepsIn(0.5f);
+            float heightSum = 0f, worstExcess = float.MinValue, minJ = 1f;
+            for (int n = 0; n < steps; n++)
+            {
+                run.Step();
+                SoftBodyStats s = run.Body.ComputeStats();
+                minJ = MathF.Min(minJ, s.MinJ);
+                worstExcess = MathF.Max(worstExcess, SoftSceneRun.Energy(s) - mass * g * (startY - s.Centroid.Y));
+                if (n >= steps - tail) heightSum += Height(run);
+            }
+            SoftBodyStats end = run.Body.ComputeStats();
+            float height = heightSum / tail;
+            TestContext.Out.WriteLine($"slime: height {height:F4} m of {Size} m ({height / Size:P0}), volume error {MathF.Abs(end.VolumeRatio - 1f):P2}, min J over the run {minJ:F3}, energy excess over gravity's work {worstExcess:F3} J");
+
+            Assert.That(run.AllFinite(), Is.True);
+            Assert.That(height, Is.LessThan(0.6f * Size), "flattens");
+            Assert.That(height, Is.GreaterThan(0.1f * Size), "but does not collapse");
+            Assert.That(end.VolumeRatio, Is.EqualTo(1f).Within(0.03f));
+            Assert.That(minJ, Is.GreaterThan(0f));
+            Assert.That(worstExcess, Is.LessThan(0.01f * mass * g * startY));
+        }
+    }
+}
