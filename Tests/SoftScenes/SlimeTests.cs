@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using Fulcrum.SoftBodies;
 using NUnit.Framework;
 
@@ -37,6 +38,43 @@ namespace Fulcrum.Tests.SoftScenes
             Assert.That(end.VolumeRatio, Is.EqualTo(1f).Within(0.03f));
             Assert.That(minJ, Is.GreaterThan(0f));
             Assert.That(worstExcess, Is.LessThan(0.01f * mass * g * startY));
+        }
+
+        static float TopToBottom(SoftSceneRun run) => Vector3.Distance(run.Body.GetProbe(0), run.Body.GetProbe(1));
+
+        // Top-to-bottom distance after slumping for 2 s and then 2 s with gravity off: an elastic
+        // body springs back (and hops off the ground, tumbling, so the distance and not the
+        // height is measured), a plastic one keeps its slump.
+        static float HeightAfterUnloading(SoftPlasticity plasticity, out float loaded, out float volume)
+        {
+            SoftSceneRun run = SoftSceneRun.Load("slime");
+            run.Body.Plasticity = plasticity;
+            for (int n = 0; n < run.StepsIn(2f); n++) run.Step();
+            loaded = Height(run);
+            run.Body.GravityScale = 0f;
+            int steps = run.StepsIn(2f), tail = run.StepsIn(0.5f);
+            float sum = 0f;
+            for (int n = 0; n < steps; n++)
+            {
+                run.Step();
+                if (n >= steps - tail) sum += TopToBottom(run);
+            }
+            Assert.That(run.AllFinite(), Is.True);
+            volume = run.Body.ComputeStats().VolumeRatio;
+            return sum / tail;
+        }
+
+        [Test]
+        public void Slime_with_plasticity_from_the_api_keeps_its_slump_when_gravity_is_switched_off()
+        {
+            // The scene format has no plasticity field; SoftBody.Plasticity turns it on after loading.
+            float elastic = HeightAfterUnloading(SoftPlasticity.None, out float elasticLoaded, out float elasticVolume);
+            float plastic = HeightAfterUnloading(SoftPlasticity.Flow(0.05f, 5f), out float plasticLoaded, out float plasticVolume);
+            TestContext.Out.WriteLine($"slime unloading (height under gravity -> top-to-bottom distance 2 s after gravity is off): elastic {elasticLoaded:F4} m -> {elastic:F4} m, plastic (yield 0.05, 5/s) {plasticLoaded:F4} m -> {plastic:F4} m, of {Size} m; volume ratios {elasticVolume:F4}, {plasticVolume:F4}");
+
+            Assert.That(elastic, Is.EqualTo(Size).Within(0.15f * Size), "elastic slime springs back to its rest height");
+            Assert.That(plastic, Is.LessThan(elastic - 0.2f * Size), "plastic slime keeps most of its slump");
+            Assert.That(plasticVolume, Is.EqualTo(1f).Within(0.03f), "plastic flow is volume preserving");
         }
     }
 }
