@@ -71,6 +71,7 @@ namespace Fulcrum.SoftBodies
                 }
             }
             if (s.Probes.Count > 0) def.Probes = s.Probes.ToArray();
+            if (s.Plasticity is ScenePlasticity flow) def.Plasticity = SoftPlasticity.Flow(flow.YieldStrain, flow.FlowRate, flow.MaxStrain);
             return def;
         }
     }

@@ -43,8 +43,8 @@ namespace Fulcrum.Tests.RigidScenes
 
         // Ten 1 kg links of 0.5 m (5 m at rest) on ball joints, hanging from the world; stretch =
         // hook-to-load length over 5 m, minus 1. Joint rows are soft at JointHertz (60 Hz by
-        // default, which the scene file cannot change): at 1000 kg the chain stretches 28 % at
-        // any iterations x substeps tried (4x16 ... 32x4, 1x32) and keeps bouncing.
+        // default): at 1000 kg the chain stretches 28 % at any iterations x substeps tried
+        // (4x16 ... 32x4, 1x32) and keeps bouncing; chain-1000kg-stiff.json raises jointHertz.
         [TestCase("chain-100kg", 0.04f, 0.01f)]
         [TestCase("chain-1000kg", 0.40f, 2f)]
         public void Chain_of_1kg_links_holds_its_load_with_bounded_stretch(string file, float maxStretchRatio, float maxSpeed)
@@ -57,13 +57,13 @@ namespace Fulcrum.Tests.RigidScenes
             Assert.That(speed, Is.LessThan(maxSpeed));
         }
 
-        // The same file with the joint rows as stiff as each of its 32 substeps allows.
+        // The same chain with "jointHertz": 1000 in its solver block: joint rows as stiff as each
+        // of its 32 substeps allows.
         [Test]
         public void Chain_holding_1000kg_stretches_under_1_percent_with_stiff_joint_rows()
         {
-            WorldSettings s = WorldSettings.Default;
-            s.JointHertz = 1000f;
-            SceneInstance scene = SceneBuilder.Build(Load("chain-1000kg"), s);
+            SceneInstance scene = SceneBuilder.Build(Load("chain-1000kg-stiff"));
+            Assert.That(scene.World.Settings.JointHertz, Is.EqualTo(1000f));
             (float stretch, float worst, float speed) = Hang(scene);
             TestContext.Out.WriteLine($"chain-1000kg (TGS 1x32, JointHertz 1000): stretch after 5 s {stretch * 100:F2} %, worst after 1 s {worst * 100:F2} %, load speed {speed:E1} m/s");
             Assert.That(worst, Is.LessThan(0.01f));

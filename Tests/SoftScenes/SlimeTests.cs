@@ -7,8 +7,8 @@ namespace Fulcrum.Tests.SoftScenes
 {
     public class SlimeTests
     {
-        // slime.json: a 0.3 m cube of E = 1e3 Pa, nu = 0.495 set on the ground. The scene format
-        // has no plasticity field, so the file's slime is elastic; rho g h / E = 2.9, so it slumps.
+        // slime.json: a 0.3 m cube of E = 1e3 Pa, nu = 0.495 set on the ground, elastic;
+        // rho g h / E = 2.9, so it slumps. slime-plastic.json adds plasticity.
         const float Size = 0.3f;
 
         static float Height(SoftSceneRun run) => run.Body.GetProbe(0).Y - run.Body.GetProbe(1).Y;
@@ -45,10 +45,9 @@ namespace Fulcrum.Tests.SoftScenes
         // Top-to-bottom distance after slumping for 2 s and then 2 s with gravity off: an elastic
         // body springs back (and hops off the ground, tumbling, so the distance and not the
         // height is measured), a plastic one keeps its slump.
-        static float HeightAfterUnloading(SoftPlasticity plasticity, out float loaded, out float volume)
+        static float HeightAfterUnloading(string file, out float loaded, out float volume)
         {
-            SoftSceneRun run = SoftSceneRun.Load("slime");
-            run.Body.Plasticity = plasticity;
+            SoftSceneRun run = SoftSceneRun.Load(file);
             for (int n = 0; n < run.StepsIn(2f); n++) run.Step();
             loaded = Height(run);
             run.Body.GravityScale = 0f;
@@ -65,11 +64,11 @@ namespace Fulcrum.Tests.SoftScenes
         }
 
         [Test]
-        public void Slime_with_plasticity_from_the_api_keeps_its_slump_when_gravity_is_switched_off()
+        public void Plastic_slime_keeps_its_slump_when_gravity_is_switched_off()
         {
-            // The scene format has no plasticity field; SoftBody.Plasticity turns it on after loading.
-            float elastic = HeightAfterUnloading(SoftPlasticity.None, out float elasticLoaded, out float elasticVolume);
-            float plastic = HeightAfterUnloading(SoftPlasticity.Flow(0.05f, 5f), out float plasticLoaded, out float plasticVolume);
+            // slime-plastic.json is slime.json plus "plasticity": { "yieldStrain": 0.05, "flowRate": 5 }.
+            float elastic = HeightAfterUnloading("slime", out float elasticLoaded, out float elasticVolume);
+            float plastic = HeightAfterUnloading("slime-plastic", out float plasticLoaded, out float plasticVolume);
             TestContext.Out.WriteLine($"slime unloading (height under gravity -> top-to-bottom distance 2 s after gravity is off): elastic {elasticLoaded:F4} m -> {elastic:F4} m, plastic (yield 0.05, 5/s) {plasticLoaded:F4} m -> {plastic:F4} m, of {Size} m; volume ratios {elasticVolume:F4}, {plasticVolume:F4}");
 
             Assert.That(elastic, Is.EqualTo(Size).Within(0.15f * Size), "elastic slime springs back to its rest height");

@@ -62,6 +62,8 @@ namespace Fulcrum.Scenes
                     if (doc.Solver.Type != SolverType.Pgs && doc.Solver.Type != SolverType.Tgs) Error(P(solver, "type"), "must be pgs or tgs");
                     AtLeast(doc.Solver.Iterations, 1, P(solver, "iterations"));
                     AtLeast(doc.Solver.Substeps, 1, P(solver, "substeps"));
+                    if (doc.Solver.ContactHertz is float contactHertz) Positive(contactHertz, P(solver, "contactHertz"));
+                    if (doc.Solver.JointHertz is float jointHertz) Positive(jointHertz, P(solver, "jointHertz"));
                 }
                 Materials();
                 for (int i = 0; i < doc.Bodies.Count; i++) Body(doc.Bodies[i], JsonPath.Index("$.bodies", i));
@@ -373,6 +375,13 @@ namespace Fulcrum.Scenes
                 if (!s.InitialDeformation.IsFinite) Error(f, "must be finite");
                 else if (s.InitialDeformation.Determinant == 0) Error(f, "must be invertible (its determinant is 0)");
                 for (int i = 0; i < s.Probes.Count; i++) Finite(s.Probes[i], JsonPath.Index(P(path, "probes"), i));
+                if (s.Plasticity is ScenePlasticity pl)
+                {
+                    string pp = P(path, "plasticity");
+                    NonNegative(pl.YieldStrain, P(pp, "yieldStrain"));
+                    Positive(pl.FlowRate, P(pp, "flowRate"));
+                    Positive(pl.MaxStrain, P(pp, "maxStrain"));
+                }
             }
 
             void SoftMaterial(SceneSoftMaterial? m, string path)

@@ -20,10 +20,13 @@ namespace Fulcrum.Scenes
             o.Add("format", doc.Format);
             o.Add("gravity", doc.Gravity);
             o.Add("timestep", doc.Timestep);
-            o.Add("solver", new Obj()
+            var solver = new Obj()
                 .Add("type", SceneNames.Of(doc.Solver.Type))
                 .Add("iterations", doc.Solver.Iterations)
-                .Add("substeps", doc.Solver.Substeps).Value);
+                .Add("substeps", doc.Solver.Substeps);
+            if (doc.Solver.ContactHertz is float contactHertz) solver.Add("contactHertz", contactHertz);
+            if (doc.Solver.JointHertz is float jointHertz) solver.Add("jointHertz", jointHertz);
+            o.Add("solver", solver.Value);
             if (doc.Materials.Count > 0)
             {
                 var materials = new Obj();
@@ -157,6 +160,8 @@ namespace Fulcrum.Scenes
                 o.Add("initialDeformation", JsonValue.Array(new List<JsonValue> { Vec(f.R0), Vec(f.R1), Vec(f.R2) }));
             }
             if (s.Probes.Count > 0) o.Add("probes", Points(s.Probes));
+            if (s.Plasticity is ScenePlasticity pl)
+                o.Add("plasticity", new Obj().Add("yieldStrain", pl.YieldStrain).Add("flowRate", pl.FlowRate).Add("maxStrain", pl.MaxStrain).Value);
             return o.Value;
         }
 

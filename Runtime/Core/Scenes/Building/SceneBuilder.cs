@@ -27,6 +27,8 @@ namespace Fulcrum.Scenes
             settings.Solver = document.Solver.Type;
             settings.Iterations = document.Solver.Iterations;
             settings.Substeps = document.Solver.Substeps;
+            if (document.Solver.ContactHertz is float contactHertz) settings.ContactHertz = contactHertz;
+            if (document.Solver.JointHertz is float jointHertz) settings.JointHertz = jointHertz;
 
             SceneExpansion e = document.Expand();
             // Every geometry first: an unsupported shape fails before a world exists.

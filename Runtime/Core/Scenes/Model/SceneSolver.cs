@@ -11,5 +11,17 @@ namespace Fulcrum.Scenes
 
         /// <summary><c>substeps</c>: TGS substeps per step (PGS ignores it), &gt;= 1. Default: 4.</summary>
         public int Substeps { get; set; } = 4;
+
+        /// <summary>
+        /// <c>contactHertz</c>: stiffness of the soft contact constraint, Hz, &gt; 0 (an extension
+        /// of fulcrum-scene/1). Null: <see cref="WorldSettings.ContactHertz"/>'s default.
+        /// </summary>
+        public float? ContactHertz { get; set; }
+
+        /// <summary>
+        /// <c>jointHertz</c>: stiffness of the joints' position correction, Hz, &gt; 0 (an
+        /// extension; heavy loads on light chains want more). Null: the WorldSettings default.
+        /// </summary>
+        public float? JointHertz { get; set; }
     }
 }

@@ -44,6 +44,8 @@ namespace Fulcrum.Scenes
             }
             s.Iterations = r.Int("iterations", s.Iterations);
             s.Substeps = r.Int("substeps", s.Substeps);
+            s.ContactHertz = r.OptionalFloat("contactHertz");
+            s.JointHertz = r.OptionalFloat("jointHertz");
             r.Finish();
             return s;
         }

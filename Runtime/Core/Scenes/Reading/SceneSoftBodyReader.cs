@@ -19,8 +19,21 @@ namespace Fulcrum.Scenes
                 if (ReadPin(p, d) is ScenePin pin) s.Pinned.Add(pin);
             if (r.Take("initialDeformation") is JsonValue f && ReadMatrix(f, d, out Mat3 m)) s.InitialDeformation = m;
             if (r.Vectors("probes") is List<Vector3> probes) s.Probes.AddRange(probes);
+            if (r.Take("plasticity") is JsonValue plasticity) s.Plasticity = ReadPlasticity(plasticity, d);
             r.Finish();
             return s;
+        }
+
+        static ScenePlasticity? ReadPlasticity(JsonValue v, SceneDiagnostics d)
+        {
+            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a plasticity object");
+            if (r == null) return null;
+            var p = new ScenePlasticity();
+            p.YieldStrain = r.Float("yieldStrain", p.YieldStrain);
+            p.FlowRate = r.Float("flowRate", p.FlowRate, required: true);
+            p.MaxStrain = r.Float("maxStrain", p.MaxStrain);
+            r.Finish();
+            return p;
         }
 
         static SceneSoftMesh? ReadMesh(JsonValue v, SceneDiagnostics d)

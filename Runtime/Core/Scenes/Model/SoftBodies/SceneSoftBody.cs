@@ -34,5 +34,8 @@ namespace Fulcrum.Scenes
 
         /// <summary><c>probes</c>: material points in rest coordinates (about the mesh centre) reported in traces, m. Default: none.</summary>
         public List<Vector3> Probes { get; } = new List<Vector3>();
+
+        /// <summary><c>plasticity</c> (an extension of fulcrum-scene/1). Default: null, elastic.</summary>
+        public ScenePlasticity? Plasticity { get; set; }
     }
 }
