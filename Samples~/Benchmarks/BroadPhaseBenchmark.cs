@@ -8,22 +8,25 @@ using Fulcrum.Mathematics;
 namespace Fulcrum.Benchmarks
 {
     /// <summary>
-    /// Collision cost per step (broad + narrow phase) of box piles and a mixed-shape pile, the
-    /// bytes a step allocates, and pair finding by the dynamic tree against brute force and
-    /// sweep-and-prune on piles of growing size.
+    /// Collision cost per step (broad + narrow phase) of box piles and a mixed-shape pile on one
+    /// thread and on all cores, the bytes a step allocates, and pair finding by the dynamic tree
+    /// against brute force and sweep-and-prune on piles of growing size.
     /// </summary>
     public sealed class BroadPhaseBenchmark : IBenchmark
     {
         public string Name => "broadphase";
 
-        public string Description => "collision ms/step for 1k/4k/16k box piles and a mixed pile; tree vs brute force vs SAP pair finding";
+        public string Description => "collision ms/step for 1k/4k/16k box piles and a mixed pile, 1 thread and all cores; tree vs brute force vs SAP pair finding";
 
         public void Run(TextWriter output, bool quick)
         {
+            int cores = Environment.ProcessorCount;
             output.WriteLine("Per step, median over the measured steps (best step in brackets); the machine may be shared.");
+            output.WriteLine($"1 thread: WorldSettings.Threads = 1; all cores: Threads = {cores} (the narrow phase's pair functions");
+            output.WriteLine("and the solver run on the worker pool; the results are bit-identical). Bytes/step: the stepping thread.");
             output.WriteLine();
-            output.WriteLine("| pile | bodies | touching points (manifolds) | broad ms/step | narrow ms/step | collide ms/step | bytes/step |");
-            output.WriteLine("|---|---:|---:|---:|---:|---:|---:|");
+            output.WriteLine($"| pile | bodies | touching points (manifolds) | broad ms, 1 thread | narrow ms, 1 thread | collide ms, 1 thread | broad ms, {cores} threads | narrow ms, {cores} threads | collide ms, {cores} threads | bytes/step (1 / {cores}) |");
+            output.WriteLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
             int[] sizes = quick ? new[] { 1000, 4000 } : new[] { 1000, 4000, 16000 };
             foreach (int n in sizes) PileRow(output, $"boxes {n / 1000}k", n, mixed: false, steps: quick ? 20 : 40);
             PileRow(output, "mixed 4k", 4000, mixed: true, steps: quick ? 20 : 40);
@@ -42,7 +45,16 @@ namespace Fulcrum.Benchmarks
 
         static void PileRow(TextWriter output, string name, int count, bool mixed, int steps)
         {
-            World w = Pile(count, mixed, 1);
+            var one = Measure(count, mixed, steps, 1);
+            var all = Measure(count, mixed, steps, Environment.ProcessorCount);
+            if (all.Contacts != one.Contacts)
+                throw new InvalidOperationException($"{name}: {one.Contacts} touching points on 1 thread, {all.Contacts} on {Environment.ProcessorCount}");
+            output.WriteLine($"| {name} | {count} | {one.Contacts} ({one.Manifolds}) | {one.Broad} | {one.Narrow} | {one.Both} | {all.Broad} | {all.Narrow} | {all.Both} | {one.Bytes} / {all.Bytes} |");
+        }
+
+        static (string Broad, string Narrow, string Both, long Bytes, int Contacts, int Manifolds) Measure(int count, bool mixed, int steps, int threads)
+        {
+            World w = Pile(count, mixed, 1, threads);
             for (int i = 0; i < 20; i++) w.Step(1 / 60f);
             var broad = new double[steps];
             var narrow = new double[steps];
@@ -57,7 +69,7 @@ namespace Fulcrum.Benchmarks
                 narrow[i] = w.LastStepProfile.NarrowPhase;
                 both[i] = broad[i] + narrow[i];
             }
-            output.WriteLine($"| {name} | {count} | {w.ContactCount} ({w.Contacts.ManifoldCount}) | {Stat(broad)} | {Stat(narrow)} | {Stat(both)} | {bytes / steps} |");
+            return (Stat(broad), Stat(narrow), Stat(both), bytes / steps, w.ContactCount, w.Contacts.ManifoldCount);
         }
 
         static string Stat(double[] values)
@@ -70,11 +82,12 @@ namespace Fulcrum.Benchmarks
         // A pile: columns of bodies 10 high on a static ground, each resting on the one below,
         // 5 cm from the neighbouring columns (inside the fat margin, outside the speculative
         // distance), drifting with small random velocities so the broad phase has work.
-        internal static World Pile(int count, bool mixed, int seed)
+        internal static World Pile(int count, bool mixed, int seed, int threads = 1)
         {
             var s = WorldSettings.Default;
             s.Gravity = Vector3.Zero;
             s.EnableSleeping = false;
+            s.Threads = threads;
             var w = new World(s);
             int layers = 10;
             int side = (int)MathF.Ceiling(MathF.Sqrt(count / (float)layers));

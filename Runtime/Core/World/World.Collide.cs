@@ -22,6 +22,15 @@ namespace Fulcrum
         // shapes by the broad phase; 0 for static ones), and the step its fat box last changed.
         float[] _shapeMotion = Array.Empty<float>();
         long[] _fatBoxStep = Array.Empty<long>();
+        // Parallel narrow phase (Settings.Threads > 1): the candidates' pair functions run on
+        // the worker pool first; per contact slot, the candidate index + 1 (0: none).
+        NarrowPhaseJob? _narrowJob;
+        int[] _narrowSlot = Array.Empty<int>();
+        // Fewer candidates than this are not worth a trip through the pool.
+        const int MinParallelPairs = 32;
+
+        /// <summary>Steps whose narrow phase ran its pair functions on the worker pool (for tests).</summary>
+        internal long ParallelNarrowPhaseSteps;
 
         float SpeculativeBase => CollisionMargins.SpeculativeDistance(_settings.LinearSlop);
 
@@ -136,12 +145,14 @@ namespace Fulcrum
             _anyWoken = false;
             _sortCount = 0;
             ContactGraph g = ContactGraph;
+            bool parallel = _settings.Threads > 1 && CollideInParallel(dt);
             int k = 0;
             while (k < g.DenseCount)
             {
                 int c = g.Dense[k];
                 if (UpdateContact(c, dt)) k++;
             }
+            if (parallel) ForgetNarrowResults();
             // Bodies woken by a contact: their pairs with other sleepers were skipped above.
             while (_anyWoken)
             {
@@ -182,14 +193,24 @@ namespace Fulcrum
             bool sensor = (ct.Flags & ContactFlags.Sensor) != 0;
             ContactBuffer buffer = _contactBuffer;
             float speculative = 0;
+            bool reduced = false;
             // Tight bounds farther apart than any speculative distance the pair could have
             // (each shape's own motion bound): no point can come out.
             float reach = sensor ? 0 : SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
             if (Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB]))
             {
                 if (!sensor) speculative = SpeculativeBase + MotionBound(shapeA, shapeB, dt);
-                buffer.Clear(speculative);
-                CollisionTable.Collide(Shapes.Geometry[shapeA], ShapeWorldPose(shapeA), Shapes.Geometry[shapeB], ShapeWorldPose(shapeB), buffer);
+                int slot = TakeNarrowResult(c, awakeA, awakeB);
+                if (slot >= 0)
+                {
+                    _narrowJob!.Restore(slot, buffer, speculative);
+                    reduced = true;
+                }
+                else
+                {
+                    buffer.Clear(speculative);
+                    CollisionTable.Collide(Shapes.Geometry[shapeA], ShapeWorldPose(shapeA), Shapes.Geometry[shapeB], ShapeWorldPose(shapeB), buffer);
+                }
             }
             else
             {
@@ -201,7 +222,7 @@ namespace Fulcrum
                 if (buffer.PointCount > 0) ct.Flags |= ContactFlags.Overlapping;
                 return true;
             }
-            buffer.Reduce();
+            if (!reduced) buffer.Reduce();
             WriteManifolds(ref ct, buffer);
             if (ct.ManifoldCount > 0) AddToSort(ct.Key, c);
 
@@ -211,6 +232,69 @@ namespace Fulcrum
                 if (!awakeB && Bodies.Type[bodyB] == BodyType.Dynamic) { Wake(bodyB); _anyWoken = true; }
             }
             return true;
+        }
+
+        // Lists the contacts whose pair function the serial pass would run with the awake
+        // states of the start of the pass (the same tests, read-only) and runs them on the
+        // worker pool. A body woken during the pass changes those states; its contacts then
+        // run inline, so the pass computes exactly what the serial one would.
+        bool CollideInParallel(float dt)
+        {
+            ContactGraph g = ContactGraph;
+            if (_narrowSlot.Length < g.Contacts.Length) _narrowSlot = new int[g.Contacts.Length];
+            NarrowPhaseJob job = _narrowJob ??= new NarrowPhaseJob(this);
+            job.Count = 0;
+            job.Dt = dt;
+            for (int k = 0; k < g.DenseCount; k++)
+            {
+                int c = g.Dense[k];
+                ref Contact ct = ref g.Contacts[c];
+                bool awakeA = Bodies.Awake[ct.BodyA], awakeB = Bodies.Awake[ct.BodyB];
+                if (!awakeA && !awakeB || (ct.Flags & ContactFlags.Sensor) != 0) continue;
+                int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
+                if ((_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
+                    !BroadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(BroadPhase.FatAabb(Shapes.ProxyId[shapeB])))
+                    continue;
+                float reach = SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
+                if (!Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB])) continue;
+                job.Add(c, awakeA, awakeB);
+            }
+            if (job.Count < MinParallelPairs)
+            {
+                job.Count = 0;
+                return false;
+            }
+            for (int i = 0; i < job.Count; i++) _narrowSlot[job.Contact(i)] = i + 1;
+            job.Run(SolverThreads());
+            ParallelNarrowPhaseSteps++;
+            return true;
+        }
+
+        // The pair function of contact c as the serial pass runs it (pure: reads poses,
+        // velocities and bounds, writes only the buffer), for the worker threads.
+        internal void CollideContact(int c, float dt, ContactBuffer buffer)
+        {
+            ref Contact ct = ref ContactGraph.Contacts[c];
+            int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
+            buffer.Clear(SpeculativeBase + MotionBound(shapeA, shapeB, dt));
+            CollisionTable.Collide(Shapes.Geometry[shapeA], ShapeWorldPose(shapeA), Shapes.Geometry[shapeB], ShapeWorldPose(shapeB), buffer);
+        }
+
+        // The candidate index of contact c's precomputed result, or -1 (none, or computed
+        // with awake states that changed since).
+        int TakeNarrowResult(int c, bool awakeA, bool awakeB)
+        {
+            if (c >= _narrowSlot.Length || _narrowSlot[c] == 0) return -1;
+            int i = _narrowSlot[c] - 1;
+            _narrowSlot[c] = 0;
+            return _narrowJob!.Matches(i, awakeA, awakeB) ? i : -1;
+        }
+
+        void ForgetNarrowResults()
+        {
+            NarrowPhaseJob job = _narrowJob!;
+            for (int i = 0; i < job.Count; i++) _narrowSlot[job.Contact(i)] = 0;
+            job.Count = 0;
         }
 
         // How far the two shapes can approach each other in the step: relative linear motion
@@ -243,7 +327,12 @@ namespace Fulcrum
             int m = first;
             for (int p = 1; p < patches; p++)
             {
-                if (g.ManifoldNext[m] < 0) g.ManifoldNext[m] = g.AllocateManifold();
+                if (g.ManifoldNext[m] < 0)
+                {
+                    // Allocate first: the pool may grow, and the link must go into the new array.
+                    int next = g.AllocateManifold();
+                    g.ManifoldNext[m] = next;
+                }
                 m = g.ManifoldNext[m];
             }
             if (g.ManifoldNext[m] >= 0)
