@@ -65,6 +65,13 @@ namespace Fulcrum.Dynamics
                 return;
             }
             SplitCalls++;
+            // Close the previous call's ticket first ("every chunk taken"). A worker still looping
+            // in RunChunks for that call may have read its ticket just before; without this it
+            // could compare that stale chunk number against the fields written below for the new
+            // call, win the compare-exchange and run a chunk of the new job that the new call
+            // then hands out again (twice-solved rows, and _remaining reaching 0 early).
+            int previous = Volatile.Read(ref _generation);
+            Interlocked.Exchange(ref _ticket, ((long)previous << 32) | int.MaxValue);
             _job = job;
             _start = start;
             _end = end;
