@@ -43,12 +43,7 @@ namespace Fulcrum.SoftBodies
                     rD -= gamma * (Vector3.Dot(d0, v0) + Vector3.Dot(d1, v1) + Vector3.Dot(d2, v2));
                     rH -= gamma * (Vector3.Dot(g0, v0) + Vector3.Dot(g1, v1) + Vector3.Dot(g2, v2));
                 }
-                float a11 = s * kDD + aD, a22 = s * kHH + aH, a12 = s * kDH;
-                float det = a11 * a22 - a12 * a12;
-                if (!(det > 1e-30f * a11 * a22)) continue;
-                float invDet = 1f / det;
-                float dlD = (rD * a22 - rH * a12) * invDet;
-                float dlH = (a11 * rH - a12 * rD) * invDet;
+                if (!XpbdConstraintPair.Solve(s * kDD + aD, s * kDH, s * kHH + aH, rD, rH, out float dlD, out float dlH)) continue;
                 lambda.X += dlD;
                 lambda.Y += dlH;
                 x[t.A] = x0 + w0 * (dlD * d0 + dlH * g0);

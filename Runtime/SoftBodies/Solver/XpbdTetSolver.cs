@@ -51,13 +51,7 @@ namespace Fulcrum.SoftBodies
                     rD -= gamma * (Vector3.Dot(d0, v0) + Vector3.Dot(d1, v1) + Vector3.Dot(d2, v2) + Vector3.Dot(d3, v3));
                     rH -= gamma * (Vector3.Dot(h0, v0) + Vector3.Dot(h1, v1) + Vector3.Dot(h2, v2) + Vector3.Dot(h3, v3));
                 }
-                float a11 = s * kDD + aD, a22 = s * kHH + aH, a12 = s * kDH;
-                float det = a11 * a22 - a12 * a12;
-                // The matrix is s K + diag(a) with K positive semi-definite: det > 0 unless degenerate.
-                if (!(det > 1e-30f * a11 * a22)) continue;
-                float invDet = 1f / det;
-                float dlD = (rD * a22 - rH * a12) * invDet;
-                float dlH = (a11 * rH - a12 * rD) * invDet;
+                if (!XpbdConstraintPair.Solve(s * kDD + aD, s * kDH, s * kHH + aH, rD, rH, out float dlD, out float dlH)) continue;
                 lambda.X += dlD;
                 lambda.Y += dlH;
                 x[t.A] = x0 + w0 * (dlD * d0 + dlH * h0);
