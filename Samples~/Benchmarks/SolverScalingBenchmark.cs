@@ -34,14 +34,14 @@ namespace Fulcrum.Benchmarks
             int measured = quick ? 20 : 40;
             int all = Environment.ProcessorCount;
 
-            output.WriteLine($"settle {settle} steps ({pileSettle} for piles), {rewarm} untimed steps after each settings switch, {measured} timed steps, dt 1/60 s, sleeping off; bytes/step = GC.GetAllocatedBytesForCurrentThread over the timed window (all threads in brackets)");
+            output.WriteLine($"settle {settle} steps ({pileSettle} for piles and ragdolls), {rewarm} untimed steps after each settings switch, {measured} timed steps, dt 1/60 s, sleeping off; bytes/step = GC.GetAllocatedBytesForCurrentThread over the timed window (all threads in brackets)");
             output.WriteLine();
             output.WriteLine("| scene | bodies | joints | setting | threads | manifolds | ms/step median | p95 | ms per 1k bodies | bytes/step |");
             output.WriteLine("|---|---|---|---|---|---|---|---|---|---|");
             Scene(output, $"pyramid {pyramidBase}", w => Pyramid(w, pyramidBase, 0f), settle, rewarm, measured, all);
             Scene(output, $"{pyramids} pyramids of 20", w => { for (int p = 0; p < pyramids; p++) Pyramid(w, 20, 2f * (p - 0.5f * (pyramids - 1))); }, settle, rewarm, measured, all);
             Scene(output, $"pile {pile}", w => Pile(w, pile), pileSettle, rewarm, measured, all);
-            Scene(output, $"{ragdolls} ragdolls", w => Ragdolls(w, ragdolls), settle, rewarm, measured, all);
+            Scene(output, $"{ragdolls} ragdolls", w => Ragdolls(w, ragdolls), pileSettle, rewarm, measured, all);
 
             output.WriteLine();
             output.WriteLine("growth: box piles, TGS, 1 thread");
@@ -141,16 +141,19 @@ namespace Fulcrum.Benchmarks
                     Box(w, new Vector3(-0.5f * (baseCount - row - 1) + i, 0.5f + row, z), Quaternion.Identity);
         }
 
-        // Six loose layers over a square footprint, each box a little turned (under 0.12 rad per
-        // axis, so a 1.25 m pitch never overlaps), dropped into a heap; the same height for every
-        // count keeps the fall, and so the settle, the same length.
+        // Six loose layers over a square footprint, odd layers shifted half a pitch so no box
+        // lands square on the one below, each box turned at random (a 1.8 m pitch clears a unit
+        // cube's 1.73 m diagonal), dropped into a heap; the same height for every count keeps
+        // the fall, and so the settle, the same length.
         static void Pile(World w, int count)
         {
+            const float pitch = 1.8f;
             int side = (int)Math.Ceiling(Math.Sqrt(count / 6.0));
             for (int n = 0; n < count; n++)
             {
                 int x = n % side, z = n / side % side, y = n / (side * side);
-                var at = new Vector3(1.25f * (x - 0.5f * side), 1f + 1.25f * y, 1.25f * (z - 0.5f * side));
+                float shift = (y & 1) * 0.5f * pitch;
+                var at = new Vector3(pitch * (x - 0.5f * side) + shift, 1f + pitch * y, pitch * (z - 0.5f * side) + shift);
                 Box(w, at, Quaternion.CreateFromYawPitchRoll(Jitter(n, 1), Jitter(n, 2), Jitter(n, 3)));
             }
         }
@@ -161,33 +164,36 @@ namespace Fulcrum.Benchmarks
             h ^= h >> 13;
             h *= 0x5bd1e995;
             h ^= h >> 15;
-            return 0.12f * ((h & 0xffff) / 32767.5f - 1f);
+            return MathF.PI * ((h & 0xffff) / 32767.5f - 1f);
         }
 
         static void Ragdolls(World w, int count)
         {
             int side = (int)Math.Ceiling(Math.Sqrt(count));
             for (int n = 0; n < count; n++)
-                Ragdoll(w, new Vector3(2f * (n % side - 0.5f * side), 0.3f, 2f * (n / side - 0.5f * side)));
+                Ragdoll(w, new Vector3(1.5f * (n % side - 0.5f * side), 0.3f, 1.5f * (n / side - 0.5f * side)),
+                    new Vector3(2f * Jitter(n, 4) / MathF.PI, 0, 2f * Jitter(n, 5) / MathF.PI));
         }
 
         // Eleven bodies, ten joints, standing (local y up), so each part's pose is a translation
-        // and every anchor is the world joint point minus the part's origin.
-        static void Ragdoll(World w, Vector3 at)
+        // and every anchor is the world joint point minus the part's origin. The upper body is
+        // pushed sideways (push, m/s) so the doll falls instead of balancing on its legs.
+        static void Ragdoll(World w, Vector3 at, Vector3 push)
         {
-            BodyHandle pelvis = Capsule(w, at + new Vector3(0, 1.00f, 0), 0.15f, 0.05f);
-            BodyHandle torso = Capsule(w, at + new Vector3(0, 1.35f, 0), 0.17f, 0.15f);
+            BodyHandle pelvis = Capsule(w, at + new Vector3(0, 1.00f, 0), 0.15f, 0.05f, Vector3.Zero);
+            BodyHandle torso = Capsule(w, at + new Vector3(0, 1.35f, 0), 0.17f, 0.15f, push);
             BodyDef hd = BodyDef.Dynamic(at + new Vector3(0, 1.76f, 0));
+            hd.LinearVelocity = push;
             BodyHandle head = w.CreateBody(hd);
             w.AddShape(head, ShapeDef.Of(ShapeGeometry.Sphere(0.12f)));
             Cone(w, pelvis, torso, at + new Vector3(0, 1.17f, 0), 30, 20);
             Cone(w, torso, head, at + new Vector3(0, 1.64f, 0), 40, 40);
             for (int side = -1; side <= 1; side += 2)
             {
-                BodyHandle thigh = Capsule(w, at + new Vector3(0.1f * side, 0.70f, 0), 0.08f, 0.15f);
-                BodyHandle shin = Capsule(w, at + new Vector3(0.1f * side, 0.25f, 0), 0.07f, 0.15f);
-                BodyHandle upperArm = Capsule(w, at + new Vector3(0.3f * side, 1.35f, 0), 0.06f, 0.12f);
-                BodyHandle forearm = Capsule(w, at + new Vector3(0.3f * side, 1.00f, 0), 0.05f, 0.12f);
+                BodyHandle thigh = Capsule(w, at + new Vector3(0.1f * side, 0.70f, 0), 0.08f, 0.15f, Vector3.Zero);
+                BodyHandle shin = Capsule(w, at + new Vector3(0.1f * side, 0.25f, 0), 0.07f, 0.15f, Vector3.Zero);
+                BodyHandle upperArm = Capsule(w, at + new Vector3(0.3f * side, 1.35f, 0), 0.06f, 0.12f, push);
+                BodyHandle forearm = Capsule(w, at + new Vector3(0.3f * side, 1.00f, 0), 0.05f, 0.12f, push);
                 Cone(w, pelvis, thigh, at + new Vector3(0.1f * side, 0.92f, 0), 45, 15);
                 Hinge(w, thigh, shin, at + new Vector3(0.1f * side, 0.47f, 0), -130, 0);
                 Cone(w, torso, upperArm, at + new Vector3(0.3f * side, 1.50f, 0), 80, 30);
@@ -195,9 +201,11 @@ namespace Fulcrum.Benchmarks
             }
         }
 
-        static BodyHandle Capsule(World w, Vector3 at, float radius, float halfHeight)
+        static BodyHandle Capsule(World w, Vector3 at, float radius, float halfHeight, Vector3 velocity)
         {
-            BodyHandle b = w.CreateBody(BodyDef.Dynamic(at));
+            BodyDef d = BodyDef.Dynamic(at);
+            d.LinearVelocity = velocity;
+            BodyHandle b = w.CreateBody(d);
             w.AddShape(b, ShapeDef.Of(ShapeGeometry.Capsule(radius, halfHeight)));
             return b;
         }
