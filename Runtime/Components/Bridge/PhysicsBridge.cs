@@ -278,7 +278,7 @@ namespace Fulcrum.Components
         public int Step(float frameDt)
         {
             ThrowIfDisposed();
-            if (!(float.IsFinite(frameDt) && frameDt >= 0)) throw new ArgumentException($"PhysicsBridge.Step: frameDt must be finite and >= 0, got {frameDt}.", nameof(frameDt));
+            FieldCheck.NonNegative(frameDt, "PhysicsBridge.Step", nameof(frameDt));
             ThrowIfDispatching(nameof(Step));
             if (_threaded) return DeliverThreadEvents();
             ApplyCommands(_commands);

@@ -32,14 +32,14 @@ namespace Fulcrum.Components
         public float spring
         {
             get => _spring;
-            set { NonNegative(value, nameof(spring)); ThrowIfStepping(nameof(spring)); _spring = value; Rebuild(); }
+            set { FieldCheck.NonNegative(value, this, nameof(spring)); ThrowIfStepping(nameof(spring)); _spring = value; Rebuild(); }
         }
 
         /// <summary>Spring damping ratio (1 = critical). Default: 0.</summary>
         public float damper
         {
             get => _damper;
-            set { NonNegative(value, nameof(damper)); ThrowIfStepping(nameof(damper)); _damper = value; Rebuild(); }
+            set { FieldCheck.NonNegative(value, this, nameof(damper)); ThrowIfStepping(nameof(damper)); _damper = value; Rebuild(); }
         }
 
         internal override void Configure(ref JointDef def)
@@ -54,11 +54,6 @@ namespace Fulcrum.Components
         void Check(float v, string field)
         {
             if (!float.IsFinite(v)) throw new ArgumentException($"{this}: {field} must be finite (or negative for the build-time distance), got {v}.", field);
-        }
-
-        void NonNegative(float v, string field)
-        {
-            if (!(float.IsFinite(v) && v >= 0)) throw new ArgumentException($"{this}: {field} must be finite and >= 0, got {v}.", field);
         }
     }
 }

@@ -21,8 +21,7 @@ namespace Fulcrum.Components
             get => _radius;
             set
             {
-                if (!(float.IsFinite(value) && value > 0))
-                    throw new ArgumentException($"{this}: radius must be finite and > 0, got {value}.", nameof(radius));
+                FieldCheck.Positive(value, this, nameof(radius));
                 ThrowIfStepping(nameof(radius));
                 _radius = value;
                 Rebuild();
@@ -35,8 +34,7 @@ namespace Fulcrum.Components
             get => _height;
             set
             {
-                if (!(float.IsFinite(value) && value > 0))
-                    throw new ArgumentException($"{this}: height must be finite and > 0, got {value}.", nameof(height));
+                FieldCheck.Positive(value, this, nameof(height));
                 ThrowIfStepping(nameof(height));
                 _height = value;
                 Rebuild();

@@ -17,6 +17,18 @@ namespace Fulcrum.Components
             if (!Validate.IsFinite(v)) throw new ArgumentException($"{owner}: {field} must be finite, got {v}.", field);
         }
 
+        /// <summary>Throws unless <paramref name="v"/> is finite and &gt; 0.</summary>
+        public static void Positive(float v, object owner, string field)
+        {
+            if (!(float.IsFinite(v) && v > 0)) throw new ArgumentException($"{owner}: {field} must be finite and > 0, got {v}.", field);
+        }
+
+        /// <summary>Throws unless <paramref name="v"/> is finite and &gt;= 0.</summary>
+        public static void NonNegative(float v, object owner, string field)
+        {
+            if (!(float.IsFinite(v) && v >= 0)) throw new ArgumentException($"{owner}: {field} must be finite and >= 0, got {v}.", field);
+        }
+
         /// <summary>Returns <paramref name="q"/> normalised, or throws "owner: field must be a finite non-zero quaternion".</summary>
         public static Quaternion Rotation(Quaternion q, object owner, string field)
         {

@@ -48,8 +48,7 @@ namespace Fulcrum.Components
             get => _mass;
             set
             {
-                if (!(float.IsFinite(value) && value > 0))
-                    throw new ArgumentException($"{this}: mass must be finite and > 0, got {value}.", nameof(mass));
+                FieldCheck.Positive(value, this, nameof(mass));
                 ThrowIfStepping(nameof(mass));
                 _mass = value;
                 if (HasBody) ApplyMass();
@@ -119,8 +118,7 @@ namespace Fulcrum.Components
             get => _linearDamping;
             set
             {
-                if (!(float.IsFinite(value) && value >= 0))
-                    throw new ArgumentException($"{this}: linearDamping must be finite and >= 0, got {value}.", nameof(linearDamping));
+                FieldCheck.NonNegative(value, this, nameof(linearDamping));
                 ThrowIfStepping(nameof(linearDamping));
                 _linearDamping = value;
                 if (HasBody) World.GetBody(_body).LinearDamping = value;
@@ -133,8 +131,7 @@ namespace Fulcrum.Components
             get => _angularDamping;
             set
             {
-                if (!(float.IsFinite(value) && value >= 0))
-                    throw new ArgumentException($"{this}: angularDamping must be finite and >= 0, got {value}.", nameof(angularDamping));
+                FieldCheck.NonNegative(value, this, nameof(angularDamping));
                 ThrowIfStepping(nameof(angularDamping));
                 _angularDamping = value;
                 if (HasBody) World.GetBody(_body).AngularDamping = value;

@@ -13,8 +13,7 @@ namespace Fulcrum.Components
             get => _radius;
             set
             {
-                if (!(float.IsFinite(value) && value > 0))
-                    throw new ArgumentException($"{this}: radius must be finite and > 0, got {value}.", nameof(radius));
+                FieldCheck.Positive(value, this, nameof(radius));
                 ThrowIfStepping(nameof(radius));
                 _radius = value;
                 Rebuild();

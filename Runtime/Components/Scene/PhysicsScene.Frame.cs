@@ -21,8 +21,7 @@ namespace Fulcrum.Components
         /// </summary>
         public void Tick(float frameDt)
         {
-            if (!(float.IsFinite(frameDt) && frameDt >= 0))
-                throw new ArgumentException($"PhysicsScene.Tick: frameDt must be finite and >= 0, got {frameDt}.", nameof(frameDt));
+            FieldCheck.NonNegative(frameDt, "PhysicsScene.Tick", nameof(frameDt));
             ThrowIfReentered("Tick");
             _inTick = true;
             try

@@ -60,7 +60,7 @@ namespace Fulcrum.Components
         public bool SphereCast(Vector3 origin, float radius, Vector3 direction, out RaycastHit hitInfo, float maxDistance = float.PositiveInfinity,
             int layerMask = DefaultRaycastLayers, QueryTriggerInteraction queryTriggerInteraction = QueryTriggerInteraction.UseGlobal)
         {
-            if (!(float.IsFinite(radius) && radius > 0)) throw new ArgumentException($"PhysicsScene.SphereCast: radius must be finite and > 0, got {radius}.", nameof(radius));
+            FieldCheck.Positive(radius, "PhysicsScene.SphereCast", nameof(radius));
             FieldCheck.Finite(origin, "PhysicsScene.SphereCast", nameof(origin));
             ThrowIfStepping(nameof(SphereCast));
             hitInfo = default;
@@ -76,7 +76,7 @@ namespace Fulcrum.Components
         public int OverlapSphere(Vector3 position, float radius, Span<Collider> results,
             int layerMask = DefaultRaycastLayers, QueryTriggerInteraction queryTriggerInteraction = QueryTriggerInteraction.UseGlobal)
         {
-            if (!(float.IsFinite(radius) && radius > 0)) throw new ArgumentException($"PhysicsScene.OverlapSphere: radius must be finite and > 0, got {radius}.", nameof(radius));
+            FieldCheck.Positive(radius, "PhysicsScene.OverlapSphere", nameof(radius));
             FieldCheck.Finite(position, "PhysicsScene.OverlapSphere", nameof(position));
             ThrowIfStepping(nameof(OverlapSphere));
             if (_overlapScratch.Length < results.Length) _overlapScratch = new ShapeHandle[Math.Max(results.Length, 2 * _overlapScratch.Length)];

@@ -46,7 +46,7 @@ namespace Fulcrum.Components
             get => _friction;
             set
             {
-                if (!(float.IsFinite(value) && value >= 0)) throw new ArgumentException($"{this}: friction must be finite and >= 0, got {value}.", nameof(friction));
+                FieldCheck.NonNegative(value, this, nameof(friction));
                 ThrowIfStepping(nameof(friction));
                 _friction = value;
                 if (!_handle.IsNone) body!.Friction = value;
