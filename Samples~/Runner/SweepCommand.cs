@@ -57,7 +57,7 @@ static class SweepCommand
         if ((long)steps * tracked > 20_000_000)
             throw new UsageException($"--steps: {steps} steps x {tracked} tracked points is too long a reference to keep; use fewer steps");
         var refPositions = new Vector3[steps * tracked];
-        SceneRun.Run(reference, steps, doc.Timestep, afterStep: n => Record(reference, dynamic, refSoft, refPositions, n));
+        SceneRun.Run(reference, steps, doc.Timestep, afterStep: n => Record(reference, dynamic, refSoft, refPositions, tracked, n));
 
         output.WriteLine($"sweep: {path}, {steps} steps of {SceneSetup.F(doc.Timestep)} s, reference tgs {ReferenceIterations}x{ReferenceSubsteps}" +
                          (refSoft != null ? $", soft bodies XPBD {ReferenceSoftSubsteps} substeps x {ReferenceSoftIterations} iterations; swept substeps and iterations set the soft bodies' XPBD solver too" : ""));
@@ -80,7 +80,7 @@ static class SweepCommand
             SceneInstance scene = SceneSetup.Build(path, With(doc, solver, it, sub), settings);
             ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out _, sub, it);
             double sum = 0;
-            RunResult r = SceneRun.Run(scene, steps, doc.Timestep, soft, afterStep: n => sum += SquaredDistance(scene, dynamic, soft, refPositions, n));
+            RunResult r = SceneRun.Run(scene, steps, doc.Timestep, soft, afterStep: n => sum += SquaredDistance(scene, dynamic, soft, refPositions, tracked, n));
             float? referenceError = tracked > 0 ? (float)Math.Sqrt(sum / ((double)steps * tracked)) : null;
             points.Add(new SweepPoint(solver, it, sub, doc.Timestep, r.MedianMs, r.MaxPenetration, r.MaxJointError, referenceError, r.EnergyDrift, r.VolumeError));
         }
@@ -119,7 +119,8 @@ static class SweepCommand
         return list;
     }
 
-    // Tracked points: every dynamic body's origin, then each soft body's centroid and probes.
+    // Tracked points: every dynamic body's origin, then each soft body's centroid and probes
+    // (a fixed number per run: counted once, before the runs).
     static int SoftPointCount(ISoftBodyMonitor? soft)
     {
         int n = 0;
@@ -139,15 +140,13 @@ static class SweepCommand
         }
     }
 
-    static void Record(SceneInstance scene, List<int> dynamic, ISoftBodyMonitor? soft, Vector3[] into, int step)
+    static void Record(SceneInstance scene, List<int> dynamic, ISoftBodyMonitor? soft, Vector3[] into, int tracked, int step)
     {
-        int tracked = dynamic.Count + SoftPointCount(soft);
         Points(scene, dynamic, soft, into.AsSpan((step - 1) * tracked, tracked));
     }
 
-    static double SquaredDistance(SceneInstance scene, List<int> dynamic, ISoftBodyMonitor? soft, Vector3[] reference, int step)
+    static double SquaredDistance(SceneInstance scene, List<int> dynamic, ISoftBodyMonitor? soft, Vector3[] reference, int tracked, int step)
     {
-        int tracked = dynamic.Count + SoftPointCount(soft);
         Span<Vector3> now = tracked <= 256 ? stackalloc Vector3[tracked] : new Vector3[tracked];
         Points(scene, dynamic, soft, now);
         int row = (step - 1) * tracked;
