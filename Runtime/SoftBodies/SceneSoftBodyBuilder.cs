@@ -1,4 +1,6 @@
 using System;
+using System.IO;
+using System.Numerics;
 using Fulcrum.Mathematics;
 using Fulcrum.Scenes;
 
@@ -21,7 +23,8 @@ namespace Fulcrum.SoftBodies
         /// <param name="scene">The built scene.</param>
         /// <param name="substeps">XPBD substeps for every soft body; 0 keeps the automatic choice (one per 1/600 s).</param>
         /// <param name="iterations">XPBD iterations per substep; 0 keeps the default (1).</param>
-        public static SoftBodyHandle[] Build(SceneInstance scene, int substeps = 0, int iterations = 0)
+        /// <param name="directory">The scene file's folder, against which <c>tetgen</c> and <c>obj</c> mesh paths resolve; null: the current directory.</param>
+        public static SoftBodyHandle[] Build(SceneInstance scene, int substeps = 0, int iterations = 0, string? directory = null)
         {
             if (scene == null) throw new ArgumentNullException(nameof(scene));
             var handles = new SoftBodyHandle[scene.SoftBodies.Count];
@@ -30,7 +33,7 @@ namespace Fulcrum.SoftBodies
             {
                 for (; made < handles.Length; made++)
                 {
-                    SoftBodyDef def = Definition(scene, made);
+                    SoftBodyDef def = Definition(scene, made, directory);
                     if (substeps > 0) def.Substeps = substeps;
                     if (iterations > 0) def.Iterations = iterations;
                     handles[made] = scene.World.CreateSoftBody(def);
@@ -39,26 +42,48 @@ namespace Fulcrum.SoftBodies
             catch (ArgumentException e)
             {
                 for (int k = 0; k < made; k++) scene.World.DestroySoftBody(handles[k]);
+                // The meshers name their fields as the scene does (mesh.radius, mesh.cells[0]).
                 string path = $"$.softBodies[{made}]";
+                if (e.ParamName is string field && (field == "mesh" || field.StartsWith("mesh.", StringComparison.Ordinal)))
+                    path += "." + field;
                 throw new SceneException(new[] { new SceneError(path, e.Message) });
             }
             return handles;
         }
 
-        /// <summary>The <see cref="SoftBodyDef"/> of soft body <paramref name="index"/> of the scene.</summary>
-        public static SoftBodyDef Definition(SceneInstance scene, int index)
+        /// <summary>
+        /// The <see cref="SoftBodyDef"/> of soft body <paramref name="index"/> of the scene; mesh
+        /// files (<c>tetgen</c>, <c>obj</c>) are read from <paramref name="directory"/> (null: the
+        /// current directory). Throws an <see cref="ArgumentException"/> naming the field on a
+        /// mesh the soft-body assembly refuses or a file it cannot read.
+        /// </summary>
+        public static SoftBodyDef Definition(SceneInstance scene, int index, string? directory = null)
         {
             SceneSoftBody s = scene.SoftBodies[index];
-            SceneSoftMesh mesh = s.Mesh ?? throw new ArgumentException("mesh is required.", "mesh");
+            SceneSoftMesh sceneMesh = s.Mesh ?? throw new ArgumentException("mesh is required.", "mesh");
             SceneSoftMaterial m = s.Material ?? throw new ArgumentException("material is required.", "material");
             MaterialModel model = m.Model == SceneSoftModel.NeoHookean ? MaterialModel.NeoHookean : MaterialModel.StableNeoHookean;
             NeoHookeanMaterial material = m.YoungsModulus is float e && m.PoissonRatio is float nu
                 ? new NeoHookeanMaterial(model, e, nu, m.Density)
                 : NeoHookeanMaterial.FromLame(model, m.Mu ?? 0, m.Lambda ?? 0, m.Density);
 
-            SoftBodyDef def = SoftBodyDef.Of(SoftMesh.Box(mesh.Size, mesh.Cells[0], mesh.Cells[1], mesh.Cells[2]), material, s.Position);
+            SoftMesh mesh = MeshOf(sceneMesh, directory);
+            // Generated meshes are centred on their origin; a file's mesh is moved so that the
+            // scene's position, pins and probes are about its centre, as for every other kind.
+            Vector3 centre = sceneMesh is SceneSoftTetGen || sceneMesh is SceneSoftObj ? mesh.Center : Vector3.Zero;
+            SoftBodyDef def = SoftBodyDef.Of(mesh, material, s.Position - centre);
             def.Name = s.Name;
             def.InitialDeformation = s.InitialDeformation;
+            if (sceneMesh is SceneSoftCloth cloth)
+            {
+                def.Thickness = cloth.Thickness;
+                def.BendingScale = cloth.BendingScale;
+            }
+            else if (sceneMesh is SceneSoftObj obj)
+            {
+                def.Thickness = obj.Thickness;
+                def.BendingScale = obj.BendingScale;
+            }
             if (s.Pinned.Count > 0)
             {
                 def.Pins = new SoftPin[s.Pinned.Count];
@@ -66,13 +91,48 @@ namespace Fulcrum.SoftBodies
                 {
                     ScenePin pin = s.Pinned[p];
                     def.Pins[p] = pin.To is string to
-                        ? SoftPin.ToBody(pin.Min, pin.Max, scene.GetBody(to))
-                        : SoftPin.ToWorld(pin.Min, pin.Max);
+                        ? SoftPin.ToBody(pin.Min + centre, pin.Max + centre, scene.GetBody(to))
+                        : SoftPin.ToWorld(pin.Min + centre, pin.Max + centre);
                 }
             }
-            if (s.Probes.Count > 0) def.Probes = s.Probes.ToArray();
+            if (s.Probes.Count > 0)
+            {
+                def.Probes = new Vector3[s.Probes.Count];
+                for (int p = 0; p < s.Probes.Count; p++) def.Probes[p] = s.Probes[p] + centre;
+            }
             if (s.Plasticity is ScenePlasticity flow) def.Plasticity = SoftPlasticity.Flow(flow.YieldStrain, flow.FlowRate, flow.MaxStrain);
             return def;
+        }
+
+        /// <summary>The engine mesh of a scene mesh; files are read relative to <paramref name="directory"/>.</summary>
+        public static SoftMesh MeshOf(SceneSoftMesh mesh, string? directory = null)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh));
+            switch (mesh)
+            {
+                case SceneSoftBox box: return SoftMesh.Box(box.Size, box.Cells[0], box.Cells[1], box.Cells[2]);
+                case SceneSoftSphere sphere: return SoftMesh.Sphere(sphere.Radius, sphere.Cells);
+                case SceneSoftCapsule capsule: return SoftMesh.Capsule(capsule.Radius, capsule.HalfHeight, capsule.Cells);
+                case SceneSoftBeam beam: return SoftMesh.Beam(beam.Length, beam.Thickness, beam.Cells);
+                case SceneSoftCloth cloth: return SoftMesh.Cloth(cloth.Size.X, cloth.Size.Y, cloth.Cells[0], cloth.Cells[1]);
+                case SceneSoftTetGen tetgen:
+                    return SoftMesh.FromTetGen(ReadText(directory, tetgen.Node, "mesh.node"), ReadText(directory, tetgen.Ele, "mesh.ele"));
+                case SceneSoftObj obj: return SoftMesh.FromObj(ReadText(directory, obj.File, "mesh.file"));
+                default: throw new ArgumentException($"mesh type {mesh.Type} is not supported.", "mesh.type");
+            }
+        }
+
+        static string ReadText(string? directory, string file, string field)
+        {
+            string path = directory != null ? Path.Combine(directory, file) : file;
+            try
+            {
+                return File.ReadAllText(path);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is NotSupportedException || e is ArgumentException)
+            {
+                throw new ArgumentException($"{field}: cannot read '{path}': {e.Message}", field, e);
+            }
         }
     }
 }

@@ -43,7 +43,7 @@ static class ReportCommand
             {
                 SceneDocument doc = SceneSetup.Load(file);
                 SceneInstance scene = SceneSetup.Build(file, doc, WorldSettings.Default);
-                ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out string? softNote);
+                ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, file, out string? softNote);
                 int steps = Math.Max(1, (int)Math.Ceiling(seconds / (double)doc.Timestep - 1e-6));
                 RunResult r = SceneRun.Run(scene, steps, doc.Timestep, soft);
                 table.Add(name, scene.BodyHandles.Count.ToString(), scene.Joints.Count.ToString(), steps.ToString(),

@@ -26,7 +26,7 @@ static class RunCommand
         int steps = SceneSetup.Steps(a, doc.Timestep, DefaultSeconds);
         SceneInstance scene = SceneSetup.Build(path, doc, settings);
         // Explicit --substeps/--iterations reach the soft bodies' XPBD solver too.
-        ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out string? softNote,
+        ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, path, out string? softNote,
             a.Has("--substeps") ? doc.Solver.Substeps : 0, a.Has("--iterations") ? doc.Solver.Iterations : 0);
 
         SceneSolver s = doc.Solver;

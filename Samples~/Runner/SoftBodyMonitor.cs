@@ -1,3 +1,4 @@
+using System.IO;
 using System.Numerics;
 using Fulcrum.Scenes;
 using Fulcrum.SoftBodies;
@@ -34,12 +35,14 @@ public static class SoftBodySupport
     /// Creates the scene's soft bodies and returns a monitor over them; null when there are
     /// none. <paramref name="substeps"/> and <paramref name="iterations"/> (0: the soft bodies'
     /// own defaults) set their XPBD solver, as the runner's --substeps and --iterations do.
+    /// Mesh files (tetgen, obj) are read relative to <paramref name="scenePath"/>'s folder.
     /// </summary>
-    public static ISoftBodyMonitor? Attach(SceneInstance scene, out string? note, int substeps = 0, int iterations = 0)
+    public static ISoftBodyMonitor? Attach(SceneInstance scene, string scenePath, out string? note, int substeps = 0, int iterations = 0)
     {
         note = null;
         if (scene.SoftBodies.Count == 0) return null;
-        return new Monitor(scene.World, SceneSoftBodyBuilder.Build(scene, substeps, iterations));
+        string? directory = Path.GetDirectoryName(Path.GetFullPath(scenePath));
+        return new Monitor(scene.World, SceneSoftBodyBuilder.Build(scene, substeps, iterations, directory));
     }
 
     sealed class Monitor : ISoftBodyMonitor

@@ -51,7 +51,7 @@ static class SweepCommand
         // The reference run doubles as the check that the scene builds at all.
         SceneDocument refDoc = With(doc, SolverType.Tgs, ReferenceIterations, ReferenceSubsteps);
         SceneInstance reference = SceneSetup.Build(path, refDoc, settings);
-        ISoftBodyMonitor? refSoft = SoftBodySupport.Attach(reference, out string? softNote, ReferenceSoftSubsteps, ReferenceSoftIterations);
+        ISoftBodyMonitor? refSoft = SoftBodySupport.Attach(reference, path, out string? softNote, ReferenceSoftSubsteps, ReferenceSoftIterations);
         List<int> dynamic = DynamicBodies(reference);
         int tracked = dynamic.Count + SoftPointCount(refSoft);
         if ((long)steps * tracked > 20_000_000)
@@ -74,11 +74,11 @@ static class SweepCommand
             if (pass == 0)
             {
                 SceneInstance warm = SceneSetup.Build(path, With(doc, solver, it, sub), settings);
-                SceneRun.Run(warm, Math.Min(steps, 60), doc.Timestep, SoftBodySupport.Attach(warm, out _, sub, it));
+                SceneRun.Run(warm, Math.Min(steps, 60), doc.Timestep, SoftBodySupport.Attach(warm, path, out _, sub, it));
                 continue;
             }
             SceneInstance scene = SceneSetup.Build(path, With(doc, solver, it, sub), settings);
-            ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, out _, sub, it);
+            ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, path, out _, sub, it);
             double sum = 0;
             RunResult r = SceneRun.Run(scene, steps, doc.Timestep, soft, afterStep: n => sum += SquaredDistance(scene, dynamic, soft, refPositions, tracked, n));
             float? referenceError = tracked > 0 ? (float)Math.Sqrt(sum / ((double)steps * tracked)) : null;

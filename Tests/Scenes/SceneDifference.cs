@@ -21,6 +21,7 @@ namespace Fulcrum.Tests.Scenes
             {
                 case float fa: return Bits(fa) == Bits((float)b) ? null : $"{path}: {fa:R} vs {(float)b:R}";
                 case Vector3 va: return Find(va.X, ((Vector3)b).X, path + ".x") ?? Find(va.Y, ((Vector3)b).Y, path + ".y") ?? Find(va.Z, ((Vector3)b).Z, path + ".z");
+                case Vector2 wa: return Find(wa.X, ((Vector2)b).X, path + ".x") ?? Find(wa.Y, ((Vector2)b).Y, path + ".y");
                 case Quaternion qa:
                 {
                     var qb = (Quaternion)b;

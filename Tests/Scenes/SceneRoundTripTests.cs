@@ -79,7 +79,7 @@ namespace Fulcrum.Tests.Scenes
             Assert.That(distance.StiffnessHz, Is.EqualTo(4f));
             Assert.That(((SceneConeTwistJoint)doc.Joints[5]).TwistDeg, Is.EqualTo(10f));
             SceneSoftBody jelly = doc.SoftBodies[0];
-            Assert.That(jelly.Mesh!.Cells, Is.EqualTo(new[] { 2, 3, 4 }));
+            Assert.That(((SceneSoftBox)jelly.Mesh!).Cells, Is.EqualTo(new[] { 2, 3, 4 }));
             Assert.That(jelly.Material!.Model, Is.EqualTo(SceneSoftModel.NeoHookean));
             Assert.That(jelly.Material.Mu, Is.EqualTo(3000f));
             Assert.That(jelly.Pinned[0].To, Is.EqualTo("lift"));

@@ -71,7 +71,19 @@ namespace Fulcrum.Tests.Scenes
             { "name": "jelly", "mesh": { "type": "box", "size": [1, 0.5, 2], "cells": [2, 3, 4] },
               "material": { "model": "neo-hookean", "mu": 3000, "lambda": 20000, "density": 1100 },
               "position": [0, 3, 0], "pinned": [{ "min": [-0.5, 0.2, -1], "max": [0.5, 0.25, 1], "to": "lift" }, { "min": [0, 0, 0], "max": [0, 0, 0] }],
-              "initialDeformation": [[1, 0.2, 0], [0, -1, 0], [0, 0, 1]], "probes": [[0, 0.25, 0]] }
+              "initialDeformation": [[1, 0.2, 0], [0, -1, 0], [0, 0, 1]], "probes": [[0, 0.25, 0]] },
+            { "name": "ball", "mesh": { "type": "sphere", "radius": 0.3, "cells": 5 },
+              "material": { "youngsModulus": 1e6, "poissonRatio": 0.49 }, "position": [2, 1, 0] },
+            { "name": "pill", "mesh": { "type": "capsule", "radius": 0.2, "halfHeight": 0.35, "cells": 4 },
+              "material": { "youngsModulus": 2e5, "poissonRatio": 0.3, "density": 900 }, "position": [4, 1, 0] },
+            { "name": "bar", "mesh": { "type": "beam", "length": 1.7, "thickness": 0.1, "cells": 17 },
+              "material": { "youngsModulus": 1e9, "poissonRatio": 0.3 }, "position": [6, 1, 0], "pinned": [{ "min": [-0.85, -1, -1], "max": [-0.85, 1, 1] }] },
+            { "name": "sheet", "mesh": { "type": "cloth", "size": [1.5, 0.75], "cells": [6, 3], "thickness": 0.001, "bendingScale": 0.25 },
+              "material": { "youngsModulus": 1e6, "poissonRatio": 0.3, "density": 300 }, "position": [8, 2, 0] },
+            { "name": "file-ball", "mesh": { "type": "tetgen", "node": "meshes/ball.node", "ele": "meshes/ball.ele" },
+              "material": { "mu": 1000, "lambda": 5000 } },
+            { "name": "sail", "mesh": { "type": "obj", "file": "C:\\sails\\jib.obj", "thickness": 0.002, "bendingScale": 0 },
+              "material": { "youngsModulus": 1e7, "poissonRatio": 0.2, "density": 800 } }
           ],
           "generators": [
             { "type": "tower", "count": 3, "size": [1, 0.5, 1], "at": [10, 0, 0], "spacing": 0.01, "mass": 2, "material": "ice" },

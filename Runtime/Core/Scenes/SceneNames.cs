@@ -52,8 +52,17 @@ namespace Fulcrum.Scenes
         /// <summary>"stable-neo-hookean" or "neo-hookean".</summary>
         public static string Of(SceneSoftModel m) => m == SceneSoftModel.StableNeoHookean ? "stable-neo-hookean" : "neo-hookean";
 
-        /// <summary>"box".</summary>
-        public static string Of(SceneSoftMeshType t) => "box";
+        /// <summary>"box", "sphere", "capsule", "beam", "cloth", "tetgen" or "obj".</summary>
+        public static string Of(SceneSoftMeshType t) => t switch
+        {
+            SceneSoftMeshType.Box => "box",
+            SceneSoftMeshType.Sphere => "sphere",
+            SceneSoftMeshType.Capsule => "capsule",
+            SceneSoftMeshType.Beam => "beam",
+            SceneSoftMeshType.Cloth => "cloth",
+            SceneSoftMeshType.TetGen => "tetgen",
+            _ => "obj",
+        };
 
         /// <summary>Parses a body type; false for an unknown spelling.</summary>
         public static bool TryParse(string s, out BodyType t)
@@ -131,8 +140,10 @@ namespace Fulcrum.Scenes
         /// <summary>Parses a soft mesh type; false for an unknown spelling.</summary>
         public static bool TryParse(string s, out SceneSoftMeshType t)
         {
+            for (t = SceneSoftMeshType.Box; t <= SceneSoftMeshType.Obj; t++)
+                if (Of(t) == s) return true;
             t = SceneSoftMeshType.Box;
-            return s == "box";
+            return false;
         }
     }
 }

@@ -18,6 +18,9 @@ namespace Fulcrum.Scenes
         /// <summary>The most bodies a scene may expand to (a typo in a count should not exhaust memory).</summary>
         public const long MaxBodies = 1_000_000;
 
+        /// <summary>The most cells a soft mesh grid may have along one axis (the soft-body meshers' limit).</summary>
+        public const int MaxGridCells = 1024;
+
         /// <summary>Every problem found, in document order; empty when the document is valid.</summary>
         public static IReadOnlyList<SceneError> Validate(SceneDocument doc)
         {
@@ -347,19 +350,7 @@ namespace Fulcrum.Scenes
 
                 string mesh = P(path, "mesh");
                 if (s.Mesh == null) Error(mesh, "missing required field");
-                else
-                {
-                    Positive(s.Mesh.Size, P(mesh, "size"));
-                    string cells = P(mesh, "cells");
-                    if (s.Mesh.Cells == null || s.Mesh.Cells.Length != 3) Error(cells, "must be [nx, ny, nz]");
-                    else
-                    {
-                        bool ok = true;
-                        for (int a = 0; a < 3; a++) ok &= AtLeast(s.Mesh.Cells[a], 1, JsonPath.Index(cells, a));
-                        if (ok && (long)s.Mesh.Cells[0] * s.Mesh.Cells[1] * s.Mesh.Cells[2] > MaxBodies)
-                            Error(cells, $"more than {MaxBodies} cells");
-                    }
-                }
+                else SoftMesh(s.Mesh, mesh);
                 SoftMaterial(s.Material, P(path, "material"));
                 Finite(s.Position, P(path, "position"));
                 for (int i = 0; i < s.Pinned.Count; i++)
@@ -378,10 +369,81 @@ namespace Fulcrum.Scenes
                 if (s.Plasticity is ScenePlasticity pl)
                 {
                     string pp = P(path, "plasticity");
+                    if (s.Mesh != null && s.Mesh.IsShell) Error(pp, $"needs a volume mesh; a {SceneNames.Of(s.Mesh.Type)} mesh is a triangle shell");
                     NonNegative(pl.YieldStrain, P(pp, "yieldStrain"));
                     Positive(pl.FlowRate, P(pp, "flowRate"));
                     Positive(pl.MaxStrain, P(pp, "maxStrain"));
                 }
+            }
+
+            void SoftMesh(SceneSoftMesh m, string path)
+            {
+                string cells = P(path, "cells");
+                switch (m)
+                {
+                    case SceneSoftBox box:
+                        Positive(box.Size, P(path, "size"));
+                        if (box.Cells == null || box.Cells.Length != 3) Error(cells, "must be [nx, ny, nz]");
+                        else
+                        {
+                            bool ok = true;
+                            for (int a = 0; a < 3; a++) ok &= AtLeast(box.Cells[a], 1, JsonPath.Index(cells, a));
+                            if (ok && (long)box.Cells[0] * box.Cells[1] * box.Cells[2] > MaxBodies)
+                                Error(cells, $"more than {MaxBodies} cells");
+                        }
+                        break;
+                    case SceneSoftSphere sphere:
+                        Positive(sphere.Radius, P(path, "radius"));
+                        GridCells(sphere.Cells, 2, cells, 3);
+                        break;
+                    case SceneSoftCapsule capsule:
+                        Positive(capsule.Radius, P(path, "radius"));
+                        NonNegative(capsule.HalfHeight, P(path, "halfHeight"));
+                        GridCells(capsule.Cells, 2, cells, 3);
+                        break;
+                    case SceneSoftBeam beam:
+                        Positive(beam.Length, P(path, "length"));
+                        Positive(beam.Thickness, P(path, "thickness"));
+                        GridCells(beam.Cells, 1, cells, 1);
+                        break;
+                    case SceneSoftCloth cloth:
+                        Positive(cloth.Size.X, JsonPath.Index(P(path, "size"), 0));
+                        Positive(cloth.Size.Y, JsonPath.Index(P(path, "size"), 1));
+                        if (cloth.Cells == null || cloth.Cells.Length != 2) Error(cells, "must be [nx, nz]");
+                        else
+                        {
+                            bool ok = GridCells(cloth.Cells[0], 1, JsonPath.Index(cells, 0), 1);
+                            ok &= GridCells(cloth.Cells[1], 1, JsonPath.Index(cells, 1), 1);
+                            if (ok && (long)cloth.Cells[0] * cloth.Cells[1] > MaxBodies) Error(cells, $"more than {MaxBodies} cells");
+                        }
+                        Positive(cloth.Thickness, P(path, "thickness"));
+                        NonNegative(cloth.BendingScale, P(path, "bendingScale"));
+                        break;
+                    case SceneSoftTetGen tetgen:
+                        FilePath(tetgen.Node, P(path, "node"));
+                        FilePath(tetgen.Ele, P(path, "ele"));
+                        break;
+                    case SceneSoftObj obj:
+                        FilePath(obj.File, P(path, "file"));
+                        Positive(obj.Thickness, P(path, "thickness"));
+                        NonNegative(obj.BendingScale, P(path, "bendingScale"));
+                        break;
+                }
+            }
+
+            // Cells along one grid axis, in [min, MaxGridCells]; the grid (of the given dimension) stays within MaxBodies cells.
+            bool GridCells(int n, int min, string path, int dimension)
+            {
+                if (n < min || n > MaxGridCells) { Error(path, $"must be in [{min}, {MaxGridCells}], got {n}"); return false; }
+                long total = 1;
+                for (int k = 0; k < dimension; k++) total *= n;
+                if (total > MaxBodies) { Error(path, $"more than {MaxBodies} cells ({n}^{dimension})"); return false; }
+                return true;
+            }
+
+            void FilePath(string file, string path)
+            {
+                if (string.IsNullOrWhiteSpace(file)) Error(path, "must be a non-empty file path");
             }
 
             void SoftMaterial(SceneSoftMaterial? m, string path)

@@ -133,8 +133,7 @@ namespace Fulcrum.Scenes
         static JsonValue SoftBody(SceneSoftBody s)
         {
             var o = new Obj().Add("name", s.Name);
-            if (s.Mesh != null)
-                o.Add("mesh", new Obj().Add("type", SceneNames.Of(s.Mesh.Type)).Add("size", s.Mesh.Size).Add("cells", Ints(s.Mesh.Cells)).Value);
+            if (s.Mesh != null) o.Add("mesh", SoftMesh(s.Mesh));
             if (s.Material != null)
             {
                 SceneSoftMaterial m = s.Material;
@@ -162,6 +161,25 @@ namespace Fulcrum.Scenes
             if (s.Probes.Count > 0) o.Add("probes", Points(s.Probes));
             if (s.Plasticity is ScenePlasticity pl)
                 o.Add("plasticity", new Obj().Add("yieldStrain", pl.YieldStrain).Add("flowRate", pl.FlowRate).Add("maxStrain", pl.MaxStrain).Value);
+            return o.Value;
+        }
+
+        static JsonValue SoftMesh(SceneSoftMesh mesh)
+        {
+            var o = new Obj().Add("type", SceneNames.Of(mesh.Type));
+            switch (mesh)
+            {
+                case SceneSoftBox box: o.Add("size", box.Size).Add("cells", Ints(box.Cells)); break;
+                case SceneSoftSphere sphere: o.Add("radius", sphere.Radius).Add("cells", sphere.Cells); break;
+                case SceneSoftCapsule capsule: o.Add("radius", capsule.Radius).Add("halfHeight", capsule.HalfHeight).Add("cells", capsule.Cells); break;
+                case SceneSoftBeam beam: o.Add("length", beam.Length).Add("thickness", beam.Thickness).Add("cells", beam.Cells); break;
+                case SceneSoftCloth cloth:
+                    o.Add("size", JsonValue.Array(new List<JsonValue> { JsonValue.From(cloth.Size.X), JsonValue.From(cloth.Size.Y) }))
+                        .Add("cells", Ints(cloth.Cells)).Add("thickness", cloth.Thickness).Add("bendingScale", cloth.BendingScale);
+                    break;
+                case SceneSoftTetGen tetgen: o.Add("node", tetgen.Node).Add("ele", tetgen.Ele); break;
+                case SceneSoftObj obj: o.Add("file", obj.File).Add("thickness", obj.Thickness).Add("bendingScale", obj.BendingScale); break;
+            }
             return o.Value;
         }
 

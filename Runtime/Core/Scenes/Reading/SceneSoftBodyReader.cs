@@ -44,12 +44,64 @@ namespace Fulcrum.Scenes
             if (type == null) return null;
             if (!SceneNames.TryParse(type, out SceneSoftMeshType kind))
             {
-                d.Add(JsonPath.Member(v.Path, "type"), $"unknown soft mesh type '{type}' (expected box)", v["type"]);
+                d.Add(JsonPath.Member(v.Path, "type"), $"unknown soft mesh type '{type}' (expected box, sphere, capsule, beam, cloth, tetgen or obj)", v["type"]);
                 return null;
             }
-            var mesh = new SceneSoftMesh { Type = kind };
-            mesh.Size = r.Vector("size", Vector3.Zero, required: true);
-            if (r.Ints("cells", 3) is int[] cells) mesh.Cells = cells;
+            SceneSoftMesh mesh;
+            switch (kind)
+            {
+                case SceneSoftMeshType.Box:
+                    var box = new SceneSoftBox { Size = r.Vector("size", Vector3.Zero, required: true) };
+                    if (r.Ints("cells", 3) is int[] cells) box.Cells = cells;
+                    mesh = box;
+                    break;
+                case SceneSoftMeshType.Sphere:
+                    var sphere = new SceneSoftSphere { Radius = r.Float("radius", 0, required: true) };
+                    sphere.Cells = r.Int("cells", sphere.Cells);
+                    mesh = sphere;
+                    break;
+                case SceneSoftMeshType.Capsule:
+                    var capsule = new SceneSoftCapsule
+                    {
+                        Radius = r.Float("radius", 0, required: true),
+                        HalfHeight = r.Float("halfHeight", 0, required: true),
+                    };
+                    capsule.Cells = r.Int("cells", capsule.Cells);
+                    mesh = capsule;
+                    break;
+                case SceneSoftMeshType.Beam:
+                    var beam = new SceneSoftBeam
+                    {
+                        Length = r.Float("length", 0, required: true),
+                        Thickness = r.Float("thickness", 0, required: true),
+                    };
+                    beam.Cells = r.Int("cells", beam.Cells);
+                    mesh = beam;
+                    break;
+                case SceneSoftMeshType.Cloth:
+                    var cloth = new SceneSoftCloth();
+                    if (r.Take("size", required: true) is JsonValue size
+                        && JsonObjectReader.ReadFloats(size, d, 2, "a size [x, z]", out float[] xz))
+                        cloth.Size = new Vector2(xz[0], xz[1]);
+                    if (r.Ints("cells", 2) is int[] grid) cloth.Cells = grid;
+                    cloth.Thickness = r.Float("thickness", cloth.Thickness);
+                    cloth.BendingScale = r.Float("bendingScale", cloth.BendingScale);
+                    mesh = cloth;
+                    break;
+                case SceneSoftMeshType.TetGen:
+                    mesh = new SceneSoftTetGen
+                    {
+                        Node = r.String("node", required: true) ?? "",
+                        Ele = r.String("ele", required: true) ?? "",
+                    };
+                    break;
+                default:
+                    var obj = new SceneSoftObj { File = r.String("file", required: true) ?? "" };
+                    obj.Thickness = r.Float("thickness", obj.Thickness);
+                    obj.BendingScale = r.Float("bendingScale", obj.BendingScale);
+                    mesh = obj;
+                    break;
+            }
             r.Finish();
             return mesh;
         }

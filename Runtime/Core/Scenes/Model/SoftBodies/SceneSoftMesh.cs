@@ -1,17 +1,17 @@
-using System.Numerics;
-
 namespace Fulcrum.Scenes
 {
-    /// <summary>The <c>mesh</c> of a soft body: <c>{"type": "box", "size": [x, y, z], "cells": [nx, ny, nz]}</c>.</summary>
-    public sealed class SceneSoftMesh
+    /// <summary>
+    /// The <c>mesh</c> of a soft body. One subclass per <see cref="SceneSoftMeshType"/>
+    /// (<see cref="SceneSoftBox"/>, <see cref="SceneSoftSphere"/>, <see cref="SceneSoftCloth"/>, ...),
+    /// each holding that kind's fields. Volume kinds become tetrahedra; <c>cloth</c> and
+    /// <c>obj</c> become triangle shells.
+    /// </summary>
+    public abstract class SceneSoftMesh
     {
-        /// <summary><c>type</c>. Required; only <c>"box"</c> exists.</summary>
-        public SceneSoftMeshType Type { get; set; } = SceneSoftMeshType.Box;
+        /// <summary>The kind, written as the <c>type</c> field.</summary>
+        public abstract SceneSoftMeshType Type { get; }
 
-        /// <summary><c>size</c>: full edge lengths of the box, m, each &gt; 0. Required.</summary>
-        public Vector3 Size { get; set; }
-
-        /// <summary><c>cells</c>: cells along x, y and z, each &gt;= 1. Default: [1, 1, 1].</summary>
-        public int[] Cells { get; set; } = { 1, 1, 1 };
+        /// <summary>True for the kinds that make a triangle shell (cloth, obj) rather than tetrahedra.</summary>
+        public bool IsShell => Type == SceneSoftMeshType.Cloth || Type == SceneSoftMeshType.Obj;
     }
 }
