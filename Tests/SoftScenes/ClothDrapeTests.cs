@@ -65,7 +65,7 @@ namespace Fulcrum.Tests.SoftScenes
         }
 
         // Largest relative lengthening of a triangle edge over its rest length.
-        static float MaxEdgeStretch(SoftBody body)
+        internal static float MaxEdgeStretch(SoftBody body)
         {
             ReadOnlySpan<Vector3> rest = body.Mesh.Vertices, x = body.Positions;
             ReadOnlySpan<int> tris = body.Mesh.Triangles;

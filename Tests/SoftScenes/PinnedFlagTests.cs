@@ -7,41 +7,69 @@ namespace Fulcrum.Tests.SoftScenes
 {
     public class PinnedFlagTests
     {
-        // pinned-flag.json: the format's soft mesh is a box only, so the "flag" is a thin tet box
-        // 1 x 0.02 x 0.6 m (cells 10, 1, 6; E = 1e5 Pa, 200 kg/m^3) laid flat at y = 2 m and pinned
-        // along one edge (the top row of the x = -0.5 face, a hinge line), released to swing down.
-        const float Length = 1f, PinY = 2.01f, PinX = -0.5f;
+        // pinned-flag.json: a cloth shell flag 1 x 0.6 m (15 x 9 cells, 0.5 mm thick, E = 1e7 Pa,
+        // 300 kg/m^3) laid flat at y = 2 m and pinned to the world along its x = -0.5 m edge,
+        // released to swing down and hang.
+        const float Length = 1f, PinX = -0.5f, PinY = 2f;
 
         [Test]
-        public void Flag_pinned_along_one_edge_swings_down_without_stretching_or_gaining_energy()
+        public void Cloth_flag_pinned_along_one_edge_swings_down_and_hangs_with_its_pins_fixed()
         {
             SoftSceneRun run = SoftSceneRun.Load("pinned-flag");
-            float g = 9.81f, mass = run.Body.TotalMass, startY = run.Body.ComputeStats().Centroid.Y;
+            SoftBody flag = run.Body;
+            Assert.That(flag.IsShell, Is.True);
+            ReadOnlySpan<Vector3> rest = flag.Mesh.Vertices;
+            int pinned = 0;
+            for (int i = 0; i < rest.Length; i++) if (rest[i].X == PinX) pinned++;
+            Vector3[] start = flag.Positions.ToArray();
+            int tip = Nearest(rest, new Vector3(-PinX, 0, 0));
+            float g = 9.81f, mass = flag.TotalMass;
             int steps = run.StepsIn(3f);
-            float deepest = 0f, longest = 0f, worstExcess = float.MinValue, minJ = 1f, worstAt = 0f;
-            SoftBodyStats worst = default;
+            float deepest = 0f, worstStretch = 0f, pinDrift = 0f, worstExcess = float.MinValue, longest = 0f;
+            float tipLow = float.MaxValue, tipHigh = float.MinValue, tipMeanX = 0f;
             for (int n = 0; n < steps; n++)
             {
                 run.Step();
-                SoftBodyStats s = run.Body.ComputeStats();
-                minJ = MathF.Min(minJ, s.MinJ);
-                float excess = SoftSceneRun.Energy(s) - mass * g * (startY - s.Centroid.Y);
-                if (excess > worstExcess) { worstExcess = excess; worstAt = (n + 1) * run.Timestep; worst = s; }
-                Vector3 edge = run.Body.GetProbe(0);
-                deepest = MathF.Max(deepest, PinY - edge.Y);
-                longest = MathF.Max(longest, new Vector2(edge.X - PinX, edge.Y - PinY).Length());
+                ReadOnlySpan<Vector3> x = flag.Positions;
+                for (int i = 0; i < rest.Length; i++)
+                    if (rest[i].X == PinX) pinDrift = MathF.Max(pinDrift, (x[i] - start[i]).Length());
+                deepest = MathF.Max(deepest, PinY - x[tip].Y);
+                worstStretch = MathF.Max(worstStretch, ClothDrapeTests.MaxEdgeStretch(flag));
+                SoftBodyStats s = flag.ComputeStats();
+                // Kinetic energy alone: the strain energy of an XPBD sheet holds the solver's stretch (below).
+                worstExcess = MathF.Max(worstExcess, s.KineticEnergy - mass * g * (PinY - s.Centroid.Y));
+                if (n >= steps - run.StepsIn(1f))
+                {
+                    tipLow = MathF.Min(tipLow, x[tip].Y);
+                    tipHigh = MathF.Max(tipHigh, x[tip].Y);
+                    tipMeanX += x[tip].X / run.StepsIn(1f);
+                }
+                longest = MathF.Max(longest, new Vector2(x[tip].X - PinX, x[tip].Y - PinY).Length());
             }
-            TestContext.Out.WriteLine($"pinned-flag: free edge fell to {deepest:F3} m below the pin line; longest pin-to-edge distance {longest:F4} m (rest {Length}); min J {minJ:F3}; energy excess over gravity's work {worstExcess:F3} J of {mass * g * 0.5f:F1} J available (at {worstAt:F2} s: kinetic {worst.KineticEnergy:F2} J, strain {worst.StrainEnergy:F2} J, gravity work {mass * g * (startY - worst.Centroid.Y):F2} J)");
-
             Assert.That(run.AllFinite(), Is.True);
-            Assert.That(deepest, Is.GreaterThan(0.8f * Length), "the flag swings down from its edge");
-            // A rod pendulum released level pulls 2.5 m g at its pivot at the bottom of the swing:
-            // about 5 % strain at the root for E = 1e5 Pa; the hinge-line pin concentrates more.
-            Assert.That(longest, Is.LessThan(1.10f * Length), "and does not stretch more than 10 %");
-            // Strain + kinetic energy should stay within the work gravity did; the thin one-layer
-            // tet sheet overshoots it by about a third (known, reported), a blow-up by far more.
-            Assert.That(worstExcess, Is.LessThan(0.5f * mass * g * 0.5f), "no energy blow-up");
-            Assert.That(minJ, Is.GreaterThan(0.5f));
+            float restingStretch = ClothDrapeTests.MaxEdgeStretch(flag);
+            TestContext.Out.WriteLine($"pinned-flag: {pinned} pinned vertices moved at most {pinDrift:E1} m; free edge fell up to {deepest:F3} m below the pin line, at most {longest:F3} m from the pin line (rest {Length} m); in the last second the tip swings between y {tipLow:F3} and {tipHigh:F3} m about mean x {tipMeanX:F3} m; worst edge stretch {worstStretch:P2} during the swing, {restingStretch:P2} at the end; kinetic energy above gravity's work by at most {worstExcess:F3} J of {mass * g * 0.5f:F2} J available; strain energy at the end {flag.ComputeStats().StrainEnergy:F3} J");
+
+            Assert.That(pinned, Is.EqualTo(10), "the whole x = -0.5 edge (9 cells: 10 vertices) is pinned");
+            Assert.That(pinDrift, Is.EqualTo(0f), "pinned vertices do not move at all");
+            Assert.That(deepest, Is.GreaterThan(0.85f * Length), "the flag swings down from its edge");
+            Assert.That(longest, Is.LessThan(1.15f * Length), "the tip stays within 15 % of its rest distance from the pin line");
+            // Nothing damps the pendulum swing but the material (no air), so in the last second
+            // it still swings; it swings below the pin line, about the plumb line.
+            Assert.That(tipHigh, Is.LessThan(PinY - 0.3f * Length), "it hangs below the pin line");
+            Assert.That(tipMeanX, Is.EqualTo(PinX).Within(0.3f * Length), "swinging about the plumb line");
+            // The stiffness-proportional damping leaves a resting XPBD sheet a few per cent long (see ClothDrapeTests).
+            Assert.That(restingStretch, Is.LessThan(0.10f), "hanging edges stretch less than 10 %");
+            Assert.That(worstStretch, Is.LessThan(0.25f), "and less than 25 % in the swing");
+            Assert.That(worstExcess, Is.LessThan(0.1f * mass * g * 0.5f), "no kinetic energy from nowhere");
+        }
+
+        static int Nearest(ReadOnlySpan<Vector3> points, Vector3 to)
+        {
+            int best = 0;
+            for (int i = 1; i < points.Length; i++)
+                if ((points[i] - to).LengthSquared() < (points[best] - to).LengthSquared()) best = i;
+            return best;
         }
     }
 }
