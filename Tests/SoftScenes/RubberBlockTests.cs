@@ -6,7 +6,7 @@ namespace Fulcrum.Tests.SoftScenes
 {
     public class RubberBlockTests
     {
-        // rubber-ball.json: the format's soft mesh is a box only, so the "rubber ball" is a
+        // rubber-ball.json: the block version of the rubber ball (rubber-ball-sphere.json is the sphere): a
         // 0.4 m rubber block (E = 1e6 Pa, nu = 0.49) dropped from 1 m (bottom face 1 m up).
         [Test]
         public void Rubber_block_dropped_from_1m_bounces_and_stays_within_its_energy()
