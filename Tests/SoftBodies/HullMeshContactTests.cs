@@ -133,11 +133,6 @@ namespace Fulcrum.Tests.SoftBodies
             Vector3 downhill = Vector3.Transform(-Vector3.UnitX, tilt);
             float start = Vector3.Dot(jelly.ComputeStats().Centroid, downhill);
             SoftBodyScenes.Run(world, 30);
-            TestContext.Out.WriteLine($"mu {mu}: at 0.75 s {Vector3.Dot(jelly.ComputeStats().Centroid, downhill) - start:F4}");
-            SoftBodyScenes.Run(world, 30);
-            TestContext.Out.WriteLine($"mu {mu}: at 1.25 s {Vector3.Dot(jelly.ComputeStats().Centroid, downhill) - start:F4}");
-            SoftBodyScenes.Run(world, 60);
-            TestContext.Out.WriteLine($"mu {mu}: at 2.25 s {Vector3.Dot(jelly.ComputeStats().Centroid, downhill) - start:F4}");
             float travelled = Vector3.Dot(jelly.ComputeStats().Centroid, downhill) - start;
             // A rigid block from rest at t = 0 slides with a = g (sin - mu cos); from t = 0.25 s
             // to 0.75 s it covers a (0.75^2 - 0.25^2) / 2 = 0.25 a.
@@ -145,13 +140,14 @@ namespace Fulcrum.Tests.SoftBodies
             return travelled;
         }
 
-        [Test, Ignore("creeps 4 cm/s on hull and box slopes alike: friction forgets the elastic pass's slip")]
+        [Test, Ignore("Known: creeps about 4 cm/s on hull and box slopes alike (per-substep friction forgets the slip the elastic pass adds after the contact pass); an anchored-friction fix held it to 1 mm but put energy into a bouncing block")]
         public void Jelly_on_a_30deg_hull_slope_with_mu_0_8_stays_put()
         {
             float travelled = SlideOnSlope(0.8f, true, out _);
             float onBox = SlideOnSlope(0.8f, false, out _);
             TestContext.Out.WriteLine($"travelled {travelled:F4} m in 0.5 s (on a box slope {onBox:F4} m)");
-            Assert.That(travelled, Is.EqualTo(0f).Within(0.01f));
+            Assert.That(travelled, Is.EqualTo(0f).Within(0.005f), "a little shear, no creep");
+            Assert.That(onBox, Is.EqualTo(travelled).Within(1e-4f), "the hull box behaves as the box");
         }
 
         [Test]
@@ -160,6 +156,56 @@ namespace Fulcrum.Tests.SoftBodies
             float travelled = SlideOnSlope(0.2f, true, out float rigid);
             TestContext.Out.WriteLine($"travelled {travelled:F4} m in 0.5 s; a rigid block {rigid:F4} m");
             Assert.That(travelled, Is.EqualTo(rigid).Within(0.1f * rigid));
+        }
+        static (float height, float imbalance) BodyOnJelly(bool hull)
+        {
+            World world = SoftBodyScenes.WorldWithGround();
+            var material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 5e4f, 0.45f, 1000f);
+            SoftBody jelly = world.GetSoftBody(world.CreateSoftBody(SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.5f, 0.2f, 0.5f), 5, 2, 5), material, new Vector3(0, 0.105f, 0))));
+            BodyHandle body = world.CreateBody(BodyDef.Dynamic(new Vector3(0, 0.32f, 0)));
+            var half = new Vector3(0.1f);
+            world.AddShape(body, ShapeDef.Of(hull ? ShapeGeometry.ConvexHull(BoxCorners(half)) : ShapeGeometry.Box(half)) with { Density = 2000f });
+            float mass = world.GetBody(body).Mass;
+            SoftBodyScenes.Run(world, 180);
+            Vector3 before = jelly.ComputeStats().Momentum + mass * world.GetBody(body).LinearVelocity;
+            SoftBodyScenes.Run(world, 30);
+            Vector3 after = jelly.ComputeStats().Momentum + mass * world.GetBody(body).LinearVelocity;
+            // Net force over the window against the weight: the ground and the jelly together carry it.
+            float weight = (jelly.TotalMass + mass) * 9.81f;
+            float imbalance = (after - before).Y / (30 * SoftBodyScenes.Dt) / weight;
+            return (world.GetBody(body).Position.Y, imbalance);
+        }
+
+        [Test]
+        public void A_dynamic_hull_box_rests_on_jelly_where_a_box_does_and_the_weight_is_carried()
+        {
+            var onHull = BodyOnJelly(hull: true);
+            var onBox = BodyOnJelly(hull: false);
+            TestContext.Out.WriteLine($"hull body at {onHull.height:F4} m (box {onBox.height:F4} m); net vertical force / weight over 0.5 s: hull {onHull.imbalance:P2}, box {onBox.imbalance:P2}");
+            Assert.That(onHull.height, Is.InRange(0.26f, 0.315f), "held up by the jelly, which gives a little");
+            Assert.That(onHull.height, Is.EqualTo(onBox.height).Within(0.001f));
+            Assert.That(onHull.imbalance, Is.EqualTo(0f).Within(0.03f), "support equals weight within 3 %");
+        }
+
+        [Test]
+        public void A_compound_of_a_box_and_a_hull_holds_jelly_level_across_both()
+        {
+            var world = new World();
+            BodyHandle ground = world.CreateBody(BodyDef.Static(new Vector3(0, -0.25f, 0)));
+            var half = new Vector3(0.5f, 0.25f, 1f);
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Box(half)) with { LocalPose = new Fulcrum.Mathematics.Pose(new Vector3(-0.5f, 0, 0), Quaternion.Identity) });
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.ConvexHull(BoxCorners(half))) with { LocalPose = new Fulcrum.Mathematics.Pose(new Vector3(0.5f, 0, 0), Quaternion.Identity) });
+            SoftBody jelly = world.GetSoftBody(world.CreateSoftBody(SoftBodyScenes.Cube(0.3f, 3, Jelly, new Vector3(0, 0.25f, 0))));
+            SoftBodyScenes.Run(world, 90);
+            float left = float.MaxValue, right = float.MaxValue;
+            foreach (Vector3 p in jelly.Positions)
+            {
+                if (p.X < -0.1f) left = MathF.Min(left, p.Y);
+                if (p.X > 0.1f) right = MathF.Min(right, p.Y);
+            }
+            TestContext.Out.WriteLine($"lowest vertex over the box {left:F5} m, over the hull {right:F5} m");
+            Assert.That(left, Is.EqualTo(0.005f).Within(0.001f));
+            Assert.That(right, Is.EqualTo(left).Within(0.0005f));
         }
     }
 }
