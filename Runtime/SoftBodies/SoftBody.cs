@@ -66,6 +66,7 @@ namespace Fulcrum.SoftBodies
             Friction = def.Friction;
             CollisionRadius = def.CollisionRadius;
             CollideWithShapes = def.CollideWithShapes;
+            CollideWithSoftBodies = def.CollideWithSoftBodies;
             Layer = def.Layer;
             CollidesWith = def.CollidesWith;
             Plasticity = def.Plasticity;
@@ -255,6 +256,9 @@ namespace Fulcrum.SoftBodies
 
         /// <summary>Collide with rigid shapes.</summary>
         public bool CollideWithShapes { get; set; }
+
+        /// <summary>Collide with other soft bodies (both must have it and pass each other's layer masks); see <see cref="SoftBodyDef.CollideWithSoftBodies"/>.</summary>
+        public bool CollideWithSoftBodies { get; set; }
 
         /// <summary>Collision layer (0..31).</summary>
         public int Layer { get; }

@@ -57,9 +57,18 @@ namespace Fulcrum.SoftBodies
         public float CollisionRadius;
         /// <summary>Collide with rigid shapes. Default: true.</summary>
         public bool CollideWithShapes;
-        /// <summary>The collision layer (0..31) rigid shapes' CollidesWith masks test. Default: 0.</summary>
+        /// <summary>
+        /// Collide with other soft bodies: surface vertices against the other body's surface
+        /// triangles, both ways, with friction (the mean of the two <see cref="Friction"/>s), momentum
+        /// conserving. On by default, as rigid bodies collide by default; two soft bodies meet
+        /// only when both have it on and each one's <see cref="CollidesWith"/> holds the other's
+        /// <see cref="Layer"/>, so put bodies that should overlap (a sleeve on an arm) on layers
+        /// that exclude each other. Costs nothing while the bodies' bounds are apart. Default: true.
+        /// </summary>
+        public bool CollideWithSoftBodies;
+        /// <summary>The collision layer (0..31) rigid shapes' and other soft bodies' CollidesWith masks test. Default: 0.</summary>
         public int Layer;
-        /// <summary>Bit mask of the shape layers this body collides with. Default: all.</summary>
+        /// <summary>Bit mask of the layers (of shapes and of other soft bodies) this body collides with. Default: all.</summary>
         public uint CollidesWith;
         /// <summary>Vertex-vertex self-collision through a spatial hash. Default: false.</summary>
         public bool SelfCollision;
@@ -84,6 +93,7 @@ namespace Fulcrum.SoftBodies
             Friction = 0.5f,
             CollisionRadius = 0.005f,
             CollideWithShapes = true,
+            CollideWithSoftBodies = true,
             Layer = 0,
             CollidesWith = uint.MaxValue,
             Plasticity = SoftPlasticity.None,

@@ -10,6 +10,7 @@ namespace Fulcrum.SoftBodies
     /// substeps together (the largest substep count any of them asks for), so a rigid body
     /// touched by two soft bodies sees both at the same instants.
     /// Reads and writes the rigid bodies it touches (pose, velocity) through <see cref="RigidCoupling"/>.
+    /// Bodies that touch each other are resolved after every substep by <see cref="SoftSoftContacts"/>.
     /// </summary>
     public sealed class SoftBodySystem : ISoftBodyStage
     {
@@ -19,6 +20,7 @@ namespace Fulcrum.SoftBodies
         readonly Stack<int> _free = new Stack<int>();
         readonly List<SoftBody> _active = new List<SoftBody>();
         readonly RigidCoupling _coupling = new RigidCoupling();
+        readonly SoftSoftContacts _softContacts = new SoftSoftContacts();
         ParallelRanges? _pool;
 
         internal SoftBodySystem(World world) => _world = world;
@@ -93,10 +95,12 @@ namespace Fulcrum.SoftBodies
             float h = dt / substeps;
             _coupling.Begin(world.Bodies);
             for (int k = 0; k < _active.Count; k++) _active[k].BeginStep(dt, _coupling);
+            _softContacts.FindPairs(_active, world.Gravity.Length(), dt);
             for (int s = 0; s < substeps; s++)
             {
                 _coupling.BeginSubstep((s + 1f) / substeps, h);
                 for (int k = 0; k < _active.Count; k++) _active[k].Substep(h, _coupling, pool);
+                if (_softContacts.PairCount > 0) _softContacts.Solve(h);
             }
             for (int k = 0; k < _active.Count; k++) _active[k].EndStep(dt);
         }

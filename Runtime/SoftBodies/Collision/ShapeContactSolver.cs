@@ -12,11 +12,19 @@ namespace Fulcrum.SoftBodies
     /// inverse mass, then Coulomb friction removes the relative tangential displacement of the
     /// substep up to mu times the normal correction (Mueller et al. 2020, "Detailed Rigid Body
     /// Simulation with Extended Position Based Dynamics", section 3.5).
+    /// Every shape kind takes part: spheres, boxes, capsules, planes and convex hulls through
+    /// <see cref="ShapeDistance"/>; static triangle meshes one triangle at a time through
+    /// <see cref="MeshVertexContacts"/>. A body with several shapes (a compound) meets each of
+    /// them in turn.
     /// </summary>
     internal sealed class ShapeContactSolver
     {
         int[] _shapes = Array.Empty<int>();
         int _count;
+        readonly MeshVertexContacts _meshes = new MeshVertexContacts();
+
+        /// <summary>Vertex-triangle pairs gathered against triangle meshes for this step.</summary>
+        public int MeshPairCount => _meshes.Count;
 
         /// <summary>Shapes gathered for this step.</summary>
         public int CandidateCount => _count;
@@ -25,6 +33,7 @@ namespace Fulcrum.SoftBodies
         public void Gather(World world, SoftBody body, float dt, RigidCoupling coupling)
         {
             _count = 0;
+            _meshes.Clear();
             Vector3[] x = body.X, v = body.V;
             Aabb bounds = Aabb.Empty;
             float maxSpeed2 = 0;
@@ -53,6 +62,11 @@ namespace Fulcrum.SoftBodies
                     box = Aabb.Union(box, s.Geometry[shape].ComputeAabb(start));
                 }
                 if (!box.Overlaps(bounds)) continue;
+                if (s.Geometry[shape].Type == ShapeType.TriangleMesh)
+                {
+                    _meshes.Gather(world, shape, body, dt, gravity);
+                    continue;
+                }
                 if (_count == _shapes.Length) Array.Resize(ref _shapes, Math.Max(8, 2 * _count));
                 _shapes[_count++] = shape;
                 coupling.Track(owner);
@@ -96,6 +110,7 @@ namespace Fulcrum.SoftBodies
                     coupling.Push(owner, contact, dlt * t, h);
                 }
             }
+            if (_meshes.Count > 0) _meshes.Solve(body);
         }
     }
 }

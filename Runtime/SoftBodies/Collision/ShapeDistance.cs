@@ -6,8 +6,9 @@ namespace Fulcrum.SoftBodies
 {
     /// <summary>
     /// The signed distance from a point to a rigid shape and the outward normal at the closest
-    /// surface point, one function per shape kind. Kinds without a function yet (convex hulls
-    /// and triangle meshes, which the collision module will bring) report no contact.
+    /// surface point, one function per shape kind (convex hulls in <see cref="HullDistance"/>).
+    /// Triangle meshes are not answered here: a vertex meets a mesh one triangle at a time
+    /// through the mesh's BVH (<see cref="MeshVertexContacts"/>), so they report no contact.
     /// </summary>
     internal static class ShapeDistance
     {
@@ -27,6 +28,7 @@ namespace Fulcrum.SoftBodies
                 case ShapeType.Box: hit = Box(shape.HalfExtents, local, radius, out distance, out localNormal); break;
                 case ShapeType.Capsule: hit = Capsule(shape.Radius, shape.HalfHeight, local, radius, out distance, out localNormal); break;
                 case ShapeType.Plane: hit = Plane(shape.Normal, shape.Offset, local, radius, out distance, out localNormal); break;
+                case ShapeType.ConvexHull: hit = HullDistance.Query((ConvexHull)shape.Data!, local, radius, out distance, out localNormal); break;
                 default:
                     distance = float.MaxValue;
                     normal = Vector3.Zero;
