@@ -356,7 +356,13 @@ namespace Fulcrum.Dynamics
             else _bodyJob.Execute(1, BodyCount);
         }
 
-        /// <summary>dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps).</summary>
+        /// <summary>
+        /// dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps); a dynamic
+        /// body whose principal moments differ turns as a free body does
+        /// (<see cref="Integrator.RotateFreeBody"/>), so that its angular momentum, not its
+        /// angular velocity, is what carries over between constraint impulses (the gyroscopic
+        /// terms).
+        /// </summary>
         public void IntegratePositions()
         {
             _bodyJob.Positions = true;
@@ -376,6 +382,7 @@ namespace Fulcrum.Dynamics
             {
                 SolverContext c = _c;
                 SolverBody[] bodies = c.Bodies;
+                BodyStorage s = c._storage;
                 if (Positions)
                 {
                     float h = c._h;
@@ -383,12 +390,21 @@ namespace Fulcrum.Dynamics
                     {
                         ref SolverBody body = ref bodies[k];
                         body.DeltaPosition += h * body.LinearVelocity;
-                        if (body.AngularVelocity != Vector3.Zero)
+                        if (body.AngularVelocity == Vector3.Zero) continue;
+                        int slot = c.BodySlot[k];
+                        Vector3 ii = s.InverseInertiaPrincipal[slot];
+                        if (body.IsDynamic == 0 || (ii.X == ii.Y && ii.Y == ii.Z))
+                        {
                             body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
+                            continue;
+                        }
+                        Quaternion start0 = c._startRotation[k];
+                        Quaternion q = body.DeltaRotation * start0;
+                        Integrator.RotateFreeBody(ref q, ref body.AngularVelocity, ii, s.InertiaFrame[slot], h);
+                        body.DeltaRotation = q * Quaternion.Conjugate(start0);
                     }
                     return;
                 }
-                BodyStorage s = c._storage;
                 Vector3 g = c._settings.Gravity;
                 float maxSpeed = c._settings.MaxLinearSpeed;
                 for (int k = start; k < end; k++)
