@@ -23,11 +23,20 @@ namespace Fulcrum.Collision
         public int PatchCount;
         ContactBuffer? _scratch;
 
+        /// <summary>A buffer with its scratch buffer made at once: a mesh pair met late in a run
+        /// (a pile whose other pairs went to sleep) must not allocate inside a step.</summary>
+        public ContactBuffer() : this(true) { }
+
+        ContactBuffer(bool withScratch)
+        {
+            if (withScratch) _scratch = new ContactBuffer(false);
+        }
+
         /// <summary>The largest separation a point may have and still be kept, metres.</summary>
         public float Speculative;
 
         /// <summary>A second buffer for pair functions that gather per-part results first (meshes).</summary>
-        public ContactBuffer Scratch => _scratch ??= new ContactBuffer();
+        public ContactBuffer Scratch => _scratch ??= new ContactBuffer(false);
 
         /// <summary>Empties the buffer for a new pair.</summary>
         public void Clear(float speculative)

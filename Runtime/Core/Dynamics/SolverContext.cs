@@ -90,6 +90,9 @@ namespace Fulcrum.Dynamics
         /// <summary>The body storage of the current step.</summary>
         public BodyStorage Storage => _storage;
 
+        /// <summary>True when a contact of the step has restitution.</summary>
+        public bool HasRestitution;
+
         /// <summary>True when the step has any constraint to solve.</summary>
         public bool HasWork => ContactCount > 0 || JointCount > 0;
 
@@ -239,11 +242,13 @@ namespace Fulcrum.Dynamics
 
             float warmContacts = set.WarmStarting ? _h / _previousDt : 0f;
             bool block = set.BlockSolver;
+            HasRestitution = false;
             for (int k = 0; k < nm; k++)
             {
                 int mi = islands.Manifolds[k];
                 ref ContactManifold m = ref _manifolds[mi];
                 if (m.PointCount > ContactManifold.MaxPoints) m.PointCount = ContactManifold.MaxPoints;
+                HasRestitution |= m.Restitution > 0;
                 int c = _color[k];
                 int at = _contactCursor[c]++;
                 int firstPoint = _pointCursor[c];
@@ -351,7 +356,13 @@ namespace Fulcrum.Dynamics
             else _bodyJob.Execute(1, BodyCount);
         }
 
-        /// <summary>dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps).</summary>
+        /// <summary>
+        /// dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps); a dynamic
+        /// body whose principal moments differ turns as a free body does
+        /// (<see cref="Integrator.RotateFreeBody"/>), so that its angular momentum, not its
+        /// angular velocity, is what carries over between constraint impulses (the gyroscopic
+        /// terms).
+        /// </summary>
         public void IntegratePositions()
         {
             _bodyJob.Positions = true;
@@ -371,6 +382,7 @@ namespace Fulcrum.Dynamics
             {
                 SolverContext c = _c;
                 SolverBody[] bodies = c.Bodies;
+                BodyStorage s = c._storage;
                 if (Positions)
                 {
                     float h = c._h;
@@ -378,12 +390,21 @@ namespace Fulcrum.Dynamics
                     {
                         ref SolverBody body = ref bodies[k];
                         body.DeltaPosition += h * body.LinearVelocity;
-                        if (body.AngularVelocity != Vector3.Zero)
+                        if (body.AngularVelocity == Vector3.Zero) continue;
+                        int slot = c.BodySlot[k];
+                        Vector3 ii = s.InverseInertiaPrincipal[slot];
+                        if (body.IsDynamic == 0 || (ii.X == ii.Y && ii.Y == ii.Z))
+                        {
                             body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
+                            continue;
+                        }
+                        Quaternion start0 = c._startRotation[k];
+                        Quaternion q = body.DeltaRotation * start0;
+                        Integrator.RotateFreeBody(ref q, ref body.AngularVelocity, ii, s.InertiaFrame[slot], h);
+                        body.DeltaRotation = q * Quaternion.Conjugate(start0);
                     }
                     return;
                 }
-                BodyStorage s = c._storage;
                 Vector3 g = c._settings.Gravity;
                 float maxSpeed = c._settings.MaxLinearSpeed;
                 for (int k = start; k < end; k++)
@@ -400,6 +421,9 @@ namespace Fulcrum.Dynamics
 
         /// <summary>One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out) or not (relax).</summary>
         public void Solve(bool useBias) => RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
+
+        /// <summary>Restitution's free approach speeds from the velocities now (TGS, each substep; see ContactSolver.RecordImpact).</summary>
+        public void RefreshApproach() => RunColors(ColorPass.Approach);
 
         /// <summary>The restitution pass over every contact.</summary>
         public void ApplyRestitution() => RunColors(ColorPass.Restitution);
@@ -432,7 +456,7 @@ namespace Fulcrum.Dynamics
         /// <summary>Constraints (or bodies) a thread takes at a time: below this, splitting costs more than it saves.</summary>
         const int MinChunk = 32;
 
-        enum ColorPass : byte { WarmStart, Solve, Relax, Restitution, Position }
+        enum ColorPass : byte { WarmStart, Solve, Relax, Restitution, Approach, Position }
 
         /// <summary>One pass over the items [start, end) of a colour: its contacts, then its joints.</summary>
         sealed class ColorJob : IRangeJob
@@ -459,6 +483,7 @@ namespace Fulcrum.Dynamics
                         case ColorPass.Solve: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, true); break;
                         case ColorPass.Relax: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, false); break;
                         case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(ref w, c.Bodies, c._wideBodies, g * width, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(ref w, c.Bodies, c._wideBodies, g * width); break;
                         default:
                         {
                             // The position pass needs only geometry, which the scalar constraints keep.
@@ -483,10 +508,11 @@ namespace Fulcrum.Dynamics
                         case ColorPass.Solve: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, true); break;
                         case ColorPass.Relax: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, false); break;
                         case ColorPass.Restitution: ContactSolver.ApplyRestitution(ref k, c.Points, c.Bodies, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Approach: ContactSolver.RefreshApproach(ref k, c.Points, c.Bodies); break;
                         default: ContactPositionSolver.Solve(ref k, c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt); break;
                     }
                 }
-                if (Pass == ColorPass.Restitution) return;
+                if (Pass == ColorPass.Restitution || Pass == ColorPass.Approach) return;
                 JointSolver.Pass jointPass = Pass == ColorPass.WarmStart ? JointSolver.Pass.WarmStart
                     : Pass == ColorPass.Solve ? JointSolver.Pass.Solve
                     : Pass == ColorPass.Relax ? JointSolver.Pass.Relax

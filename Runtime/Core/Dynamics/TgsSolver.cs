@@ -5,7 +5,8 @@ namespace Fulcrum.Dynamics
     /// v3; PhysX's TGS is the same idea with a rigid bias). The step is cut into Substeps;
     /// per substep: integrate velocities, warm start, Iterations biased passes (soft rows pull
     /// positions back at a bounded rate), integrate positions, RelaxIterations unbiased passes
-    /// that remove the velocity the bias added. Restitution runs after the substeps (Iterations passes).
+    /// that remove the velocity the bias added, then restitution for the impacts of the
+    /// substep (Iterations passes, only in steps with a bouncy contact).
     /// Contact separations and joint errors are re-evaluated each substep from the bodies'
     /// motion, so small substeps act like small steps at the price of one narrow phase.
     /// </summary>
@@ -22,15 +23,18 @@ namespace Fulcrum.Dynamics
             for (int sub = 0; sub < s.Substeps; sub++)
             {
                 context.IntegrateVelocities();
+                if (context.HasRestitution) context.RefreshApproach();
                 context.WarmStart();
                 for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true);
                 context.IntegratePositions();
                 for (int i = 0; i < s.RelaxIterations; i++) context.Solve(useBias: false);
+                // Restitution for the impacts of this substep. The points of a face contact
+                // share one body: the bounce needs the same number of Gauss-Seidel passes as any
+                // other row to reach -e v0 at every point.
+                if (context.HasRestitution)
+                    for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
                 context.AccumulateApplied();
             }
-            // The points of a face contact share one body: the bounce needs the same number of
-            // Gauss-Seidel passes as any other row to reach -e v0 at every point.
-            for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
             context.StoreVelocities();
             context.StorePositions();
             return context.End();

@@ -308,6 +308,7 @@ namespace Fulcrum.Scenes
                 Finite(j.AnchorB, P(path, "anchorB"));
                 if (j.BreakForce is float force) Positive(force, P(path, "breakForce"));
                 if (j.BreakTorque is float torque) Positive(torque, P(path, "breakTorque"));
+                if (j.FrictionTorque is float friction) NonNegative(friction, P(path, "frictionTorque"));
                 switch (j)
                 {
                     case SceneHingeJoint h:

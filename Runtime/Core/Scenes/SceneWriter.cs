@@ -127,6 +127,7 @@ namespace Fulcrum.Scenes
             }
             if (j.BreakForce is float force) o.Add("breakForce", force);
             if (j.BreakTorque is float torque) o.Add("breakTorque", torque);
+            if (j.FrictionTorque is float friction) o.Add("frictionTorque", friction);
             return o.Value;
         }
 

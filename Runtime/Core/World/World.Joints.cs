@@ -68,6 +68,8 @@ namespace Fulcrum
                 j.MaxMotorForce = def.MaxMotorForce;
             }
             j.MotorSpeed = def.MotorSpeed;
+            bool turns = def.Kind == JointKind.Ball || def.Kind == JointKind.Hinge || def.Kind == JointKind.ConeTwist;
+            j.FrictionTorque = turns ? def.FrictionTorque : 0;
             j.SpringHertz = def.Kind == JointKind.Hinge || def.Kind == JointKind.Distance ? def.StiffnessHz : 0;
             j.SpringDamping = def.Damping;
             j.ConeAngle = def.Kind == JointKind.ConeTwist ? def.ConeDeg * toRad : MathF.PI;
@@ -109,6 +111,7 @@ namespace Fulcrum
             Validate.Finite(d.MotorSpeed, "joint.MotorSpeed");
             Validate.NonNegative(d.MaxMotorTorque, "joint.MaxMotorTorque");
             Validate.NonNegative(d.MaxMotorForce, "joint.MaxMotorForce");
+            Validate.NonNegative(d.FrictionTorque, "joint.FrictionTorque");
             NotNaN(d.MinLength, "joint.MinLength");
             NotNaN(d.MaxLength, "joint.MaxLength");
             NotNaN(d.RestLength, "joint.RestLength");

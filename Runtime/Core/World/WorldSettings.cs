@@ -56,10 +56,15 @@ namespace Fulcrum
         public bool Deterministic;
         /// <summary>
         /// Contact stiffness of the soft contact constraint (TGS), Hz; clamped to a quarter of the
-        /// substep rate, and doubled against static and kinematic bodies (within the same clamp).
-        /// Soft contacts sag under load by about (load / effective mass) g / (2 pi f)^2, and a
-        /// tall column on soft contacts can buckle: 60 Hz keeps a 40-box tower standing with the
-        /// default 4 substeps. Default: 60 Hz.
+        /// substep rate (the stiffest the soft step keeps stable: half the substep rate already
+        /// shakes a 40-box tower), and doubled against static and kinematic bodies (within the
+        /// same clamp). The default is above the clamp, so contacts are as stiff as the substeps
+        /// allow: 60 Hz at 60 Hz x 4 substeps, 120 Hz at 8, 240 Hz at 16. Soft contacts sag under
+        /// load by about (load / effective mass) g / (2 pi f)^2, and a tall column on soft
+        /// contacts buckles once its weight's moment beats the contacts' tilt stiffness (which
+        /// grows as f^2): at 60 Hz a 40-box tower stands (sag 0.11 m), a 100-box tower stacked
+        /// +-1 mm off needs 16 substeps to stand 10 s (sag 43 mm) and 32 to stay put.
+        /// Default: 1000 Hz.
         /// </summary>
         public float ContactHertz;
         /// <summary>Damping ratio of the soft contact constraint (1 = critical). Default: 10.</summary>
@@ -97,7 +102,7 @@ namespace Fulcrum
             SleepAngularVelocity = 0.05f,
             Threads = 1,
             Deterministic = true,
-            ContactHertz = 60f,
+            ContactHertz = 1000f,
             ContactDampingRatio = 10f,
             JointHertz = 60f,
             JointDampingRatio = 5f,

@@ -327,12 +327,29 @@ namespace Fulcrum.Dynamics
             // The approach speed of the (sub)step a point first carries load (RecordImpact).
             var first1 = Vector.BitwiseAnd(Vector.GreaterThan(x1, p1.MaxNormalImpulse), Vector.Equals(p1.MaxNormalImpulse, zero));
             var first2 = Vector.BitwiseAnd(Vector.GreaterThan(x2, p2.MaxNormalImpulse), Vector.Equals(p2.MaxNormalImpulse, zero));
-            p1.RelativeVelocity = Vector.ConditionalSelect(first1, vn1, p1.RelativeVelocity);
-            p2.RelativeVelocity = Vector.ConditionalSelect(first2, vn2, p2.RelativeVelocity);
+            p1.RelativeVelocity = Vector.ConditionalSelect(first1, Vector.Max(vn1, p1.RelativeVelocity), p1.RelativeVelocity);
+            p2.RelativeVelocity = Vector.ConditionalSelect(first2, Vector.Max(vn2, p2.RelativeVelocity), p2.RelativeVelocity);
             p1.MaxNormalImpulse = Vector.Max(p1.MaxNormalImpulse, x1);
             p2.MaxNormalImpulse = Vector.Max(p2.MaxNormalImpulse, x2);
             ApplyNormal(w, p1.Normal, d1, ref l);
             ApplyNormal(w, p2.Normal, d2, ref l);
+        }
+
+        /// <summary>ContactSolver.RefreshApproach for a group.</summary>
+        public static void RefreshApproach(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        {
+            if (Vector.EqualsAll(w.Restitution, Vector<float>.Zero)) return;
+            Gather(bodies, laneBodies, groupOffset, out Lanes l, false);
+            Refresh(w, ref w.P0, l);
+            Refresh(w, ref w.P1, l);
+            Refresh(w, ref w.P2, l);
+            Refresh(w, ref w.P3, l);
+        }
+
+        static void Refresh(in WideContact w, ref WidePoint p, in Lanes l)
+        {
+            var untouched = Vector.Equals(p.MaxNormalImpulse, Vector<float>.Zero);
+            p.RelativeVelocity = Vector.ConditionalSelect(untouched, RowVelocity(p.Normal, w.Normal, l), p.RelativeVelocity);
         }
 
         /// <summary>The restitution pass of a group.</summary>
@@ -351,7 +368,8 @@ namespace Fulcrum.Dynamics
         static void Restitute(ref WideContact w, ref WidePoint p, Vector<float> limit, ref Lanes l)
         {
             Vector<float> zero = Vector<float>.Zero;
-            var active = Vector.BitwiseAnd(Vector.LessThanOrEqual(p.RelativeVelocity, limit),
+            // As ContactSolver.ApplyRestitution: impacts of this substep only (nothing applied before).
+            var active = Vector.BitwiseAnd(Vector.BitwiseAnd(Vector.LessThanOrEqual(p.RelativeVelocity, limit), Vector.Equals(p.Applied, zero)),
                 Vector.BitwiseAnd(Vector.GreaterThan(p.MaxNormalImpulse, zero), Vector.GreaterThan(w.Restitution, zero)));
             if (Vector.EqualsAll(active, Vector<int>.Zero)) return;
             Vector<float> vn = RowVelocity(p.Normal, w.Normal, l);

@@ -25,6 +25,8 @@ namespace Fulcrum.Dynamics
         public float ConeAngle, TwistAngle;
         /// <summary>Motor speed (rad/s or m/s) and largest motor torque or force (N m or N); 0 = no motor.</summary>
         public float MotorSpeed, MaxMotorForce;
+        /// <summary>Joint friction: the largest torque against relative rotation, N m (0 = none).</summary>
+        public float FrictionTorque;
         /// <summary>Spring frequency (Hz, 0 = none) and damping ratio.</summary>
         public float SpringHertz, SpringDamping;
         /// <summary>The spring's coefficients over the current (sub)step.</summary>
@@ -62,6 +64,8 @@ namespace Fulcrum.Dynamics
         public AxisConstraintPart Cone;
         public AxisConstraintPart Motor;
         public AxisConstraintPart Spring;
+        /// <summary>Joint friction's accumulated angular impulse on B (world, N m s per (sub)step).</summary>
+        public Vector3 FrictionImpulse;
 
         // Reports.
         /// <summary>Constraint force and torque on B in the last step, world, N and N m.</summary>

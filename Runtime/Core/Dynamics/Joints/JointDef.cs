@@ -57,6 +57,13 @@ namespace Fulcrum
         public float StiffnessHz;
         /// <summary>Spring damping ratio (1 = critical). Default: 0.</summary>
         public float Damping;
+        /// <summary>
+        /// Ball, hinge and cone-twist: joint friction, the largest torque that resists the
+        /// bodies' relative rotation (about the hinge axis; about any axis for ball and
+        /// cone-twist), N m. Without it a limb resting at a limit or hanging from one swings
+        /// as an undamped pendulum and never sleeps; ragdolls want a little. Default: 0.
+        /// </summary>
+        public float FrictionTorque;
         /// <summary>Prismatic: lower limit of the slide, m; -infinity = none. Default: -infinity.</summary>
         public float Lower;
         /// <summary>Prismatic: upper limit of the slide, m; +infinity = none. Default: +infinity.</summary>

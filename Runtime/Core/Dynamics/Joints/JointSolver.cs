@@ -84,6 +84,7 @@ namespace Fulcrum.Dynamics
             j.Cone.Impulse *= s;
             j.Motor.Impulse *= s;
             j.Spring.Impulse *= s;
+            j.FrictionImpulse *= s;
         }
 
         /// <summary>Runs one pass of joint <paramref name="j"/> on copies of its bodies (written back by the caller).</summary>
@@ -116,11 +117,17 @@ namespace Fulcrum.Dynamics
             switch (pass)
             {
                 case Pass.Prepare: break;
-                case Pass.WarmStart: j.Point.WarmStart(ref a, ref b, rA, rB); break;
+                case Pass.WarmStart:
+                    WarmStartFriction(j, ref a, ref b);
+                    j.Point.WarmStart(ref a, ref b, rA, rB);
+                    break;
                 case Pass.Solve:
-                case Pass.Relax: j.Point.Solve(ref a, ref b, rA, rB, d, p.Joint, pass == Pass.Solve); break;
+                case Pass.Relax:
+                    SolveFriction(ref j, ref a, ref b, Vector3.Zero, p.H);
+                    j.Point.Solve(ref a, ref b, rA, rB, d, p.Joint, pass == Pass.Solve);
+                    break;
                 case Pass.Position: j.Point.SolvePosition(ref a, ref b, rA, rB, d, p.Beta); break;
-                default: Report(ref j, p, j.Point.Impulse, Vector3.Zero, d.Length()); break;
+                default: Report(ref j, p, j.Point.Impulse, j.FrictionImpulse, d.Length()); break;
             }
         }
 
@@ -179,6 +186,7 @@ namespace Fulcrum.Dynamics
                 case Pass.Prepare: break;
                 case Pass.WarmStart:
                     if (spring) j.Spring.WarmStart(ref a, ref b);
+                    WarmStartFriction(j, ref a, ref b);
                     if (motor) j.Motor.WarmStart(ref a, ref b);
                     if (lower) j.LowerLimit.WarmStart(ref a, ref b);
                     if (upper) j.UpperLimit.WarmStart(ref a, ref b);
@@ -190,6 +198,7 @@ namespace Fulcrum.Dynamics
                 {
                     bool useBias = pass == Pass.Solve;
                     if (spring) SolveSpring(ref j.Spring, ref a, ref b, angle, j.SpringSoftness);
+                    SolveFriction(ref j, ref a, ref b, axis, p.H);
                     if (motor) SolveMotor(ref j.Motor, ref a, ref b, j.MotorSpeed, j.MaxMotorForce * p.H);
                     if (lower) j.LowerLimit.SolveLimit(ref a, ref b, angle - j.Lower, p.Joint, p.InvH, useBias);
                     if (upper) j.UpperLimit.SolveLimit(ref a, ref b, j.Upper - angle, p.Joint, p.InvH, useBias);
@@ -206,7 +215,7 @@ namespace Fulcrum.Dynamics
                 default:
                 {
                     Vector3 torque = j.HingeRotation.Impulse1 * u1 + j.HingeRotation.Impulse2 * u2
-                        + (j.Motor.Impulse + j.Spring.Impulse + j.LowerLimit.Impulse - j.UpperLimit.Impulse) * axis;
+                        + (j.Motor.Impulse + j.Spring.Impulse + j.LowerLimit.Impulse - j.UpperLimit.Impulse) * axis + j.FrictionImpulse;
                     Report(ref j, p, j.Point.Impulse, torque, d.Length());
                     break;
                 }
@@ -359,6 +368,7 @@ namespace Fulcrum.Dynamics
             {
                 case Pass.Prepare: break;
                 case Pass.WarmStart:
+                    WarmStartFriction(j, ref a, ref b);
                     if (cone) j.Cone.WarmStart(ref a, ref b);
                     if (limits)
                     {
@@ -371,6 +381,7 @@ namespace Fulcrum.Dynamics
                 case Pass.Relax:
                 {
                     bool useBias = pass == Pass.Solve;
+                    SolveFriction(ref j, ref a, ref b, Vector3.Zero, p.H);
                     if (cone) j.Cone.SolveLimit(ref a, ref b, j.ConeAngle - swing, p.Joint, p.InvH, useBias);
                     if (limits)
                     {
@@ -391,7 +402,7 @@ namespace Fulcrum.Dynamics
                     break;
                 default:
                 {
-                    Vector3 torque = -j.Cone.Impulse * swingAxis + (j.LowerLimit.Impulse - j.UpperLimit.Impulse) * t;
+                    Vector3 torque = -j.Cone.Impulse * swingAxis + (j.LowerLimit.Impulse - j.UpperLimit.Impulse) * t + j.FrictionImpulse;
                     Report(ref j, p, j.Point.Impulse, torque, d.Length());
                     break;
                 }
@@ -409,6 +420,45 @@ namespace Fulcrum.Dynamics
         /// <summary>A motor: drives J v to <paramref name="speed"/> with an impulse bounded by <paramref name="maxImpulse"/>.</summary>
         static void SolveMotor(ref AxisConstraintPart row, ref SolverBody a, ref SolverBody b, float speed, float maxImpulse) =>
             row.Solve(ref a, ref b, -speed, 1, 0, -maxImpulse, maxImpulse);
+
+        /// <summary>Applies the joint friction's accumulated impulse (warm start).</summary>
+        static void WarmStartFriction(in JointData j, ref SolverBody a, ref SolverBody b)
+        {
+            if (j.FrictionTorque == 0) return;
+            a.AngularVelocity -= a.InverseInertia * j.FrictionImpulse;
+            b.AngularVelocity += b.InverseInertia * j.FrictionImpulse;
+        }
+
+        /// <summary>
+        /// Joint friction: an angular impulse that drives the relative angular velocity
+        /// wB - wA to zero, its accumulated length kept within FrictionTorque h (Coulomb's law
+        /// for a joint: it holds until the load exceeds the friction torque, then slips). With
+        /// a nonzero <paramref name="axis"/> (a hinge) only the rotation about it is resisted.
+        /// K = IA^-1 + IB^-1 in world axes; dLambda = -K^-1 (wB - wA).
+        /// </summary>
+        static void SolveFriction(ref JointData j, ref SolverBody a, ref SolverBody b, Vector3 axis, float h)
+        {
+            if (j.FrictionTorque == 0) return;
+            Vector3 dw = b.AngularVelocity - a.AngularVelocity;
+            Mathematics.Mat3 k = a.InverseInertia + b.InverseInertia;
+            Vector3 delta;
+            if (axis != Vector3.Zero)
+            {
+                float kAxis = Vector3.Dot(axis, k * axis);
+                delta = kAxis > 1e-30f ? (-Vector3.Dot(axis, dw) / kAxis) * axis : Vector3.Zero;
+            }
+            else if (!k.TryInvert(out Mathematics.Mat3 mass)) return;
+            else delta = -(mass * dw);
+            Vector3 old = j.FrictionImpulse;
+            Vector3 total = old + delta;
+            float max = j.FrictionTorque * h;
+            float len2 = total.LengthSquared();
+            if (len2 > max * max) total *= max / MathF.Sqrt(len2);
+            j.FrictionImpulse = total;
+            Vector3 applied = total - old;
+            a.AngularVelocity -= a.InverseInertia * applied;
+            b.AngularVelocity += b.InverseInertia * applied;
+        }
 
         /// <summary>A spring toward C = 0: a soft row with the joint's own frequency and damping.</summary>
         static void SolveSpring(ref AxisConstraintPart row, ref SolverBody a, ref SolverBody b, float C, in Softness soft) =>

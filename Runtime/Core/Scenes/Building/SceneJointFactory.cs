@@ -48,6 +48,7 @@ namespace Fulcrum.Scenes
             }
             if (joint.BreakForce is float f) d.BreakForce = f;
             if (joint.BreakTorque is float t) d.BreakTorque = t;
+            if (joint.FrictionTorque is float friction) d.FrictionTorque = friction;
             d.Name = joint.Name;
             return d;
         }

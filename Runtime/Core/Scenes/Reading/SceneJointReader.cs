@@ -73,6 +73,7 @@ namespace Fulcrum.Scenes
             joint.AnchorB = r.Vector("anchorB", Vector3.Zero);
             joint.BreakForce = r.OptionalFloat("breakForce");
             joint.BreakTorque = r.OptionalFloat("breakTorque");
+            joint.FrictionTorque = r.OptionalFloat("frictionTorque");
             r.Finish();
             return joint;
         }

@@ -32,5 +32,8 @@ namespace Fulcrum.Scenes
 
         /// <summary><c>breakTorque</c>: the joint breaks above this constraint torque, N m, &gt; 0; null: unbreakable.</summary>
         public float? BreakTorque { get; set; }
+
+        /// <summary><c>frictionTorque</c>: ball, hinge and coneTwist joint friction, N m, &gt;= 0; null: none (see <see cref="JointDef.FrictionTorque"/>).</summary>
+        public float? FrictionTorque { get; set; }
     }
 }
