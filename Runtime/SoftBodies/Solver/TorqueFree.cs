@@ -1,5 +1,4 @@
 using System.Numerics;
-using Fulcrum.Mathematics;
 
 namespace Fulcrum.SoftBodies
 {
@@ -24,11 +23,16 @@ namespace Fulcrum.SoftBodies
             Vector3 c = (m0 * p0 + m1 * p1 + m2 * p2 + m3 * p3) / (m0 + m1 + m2 + m3);
             Vector3 r0 = p0 - c, r1 = p1 - c, r2 = p2 - c, r3 = p3 - c;
             Vector3 torque = Vector3.Cross(r0, g0) + Vector3.Cross(r1, g1) + Vector3.Cross(r2, g2) + Vector3.Cross(r3, g3);
-            if (!Solve(Inertia(m0, r0) + Inertia(m1, r1) + Inertia(m2, r2) + Inertia(m3, r3), torque, out Vector3 omega)) return;
-            g0 -= m0 * Vector3.Cross(omega, r0);
-            g1 -= m1 * Vector3.Cross(omega, r1);
-            g2 -= m2 * Vector3.Cross(omega, r2);
-            g3 -= m3 * Vector3.Cross(omega, r3);
+            Vector3 q0 = m0 * r0, q1 = m1 * r1, q2 = m2 * r2, q3 = m3 * r3;
+            // Second moments sum m r r^T: diagonal and off-diagonal.
+            Vector3 diag = q0 * r0 + q1 * r1 + q2 * r2 + q3 * r3;
+            Vector3 off = q0 * new Vector3(r0.Y, r0.Z, r0.X) + q1 * new Vector3(r1.Y, r1.Z, r1.X)
+                + q2 * new Vector3(r2.Y, r2.Z, r2.X) + q3 * new Vector3(r3.Y, r3.Z, r3.X);
+            if (!Solve(diag, off, torque, out Vector3 omega)) return;
+            g0 -= Vector3.Cross(omega, q0);
+            g1 -= Vector3.Cross(omega, q1);
+            g2 -= Vector3.Cross(omega, q2);
+            g3 -= Vector3.Cross(omega, q3);
         }
 
         /// <summary>The same for a triangle (3 vertices).</summary>
@@ -39,32 +43,37 @@ namespace Fulcrum.SoftBodies
             Vector3 c = (m0 * p0 + m1 * p1 + m2 * p2) / (m0 + m1 + m2);
             Vector3 r0 = p0 - c, r1 = p1 - c, r2 = p2 - c;
             Vector3 torque = Vector3.Cross(r0, g0) + Vector3.Cross(r1, g1) + Vector3.Cross(r2, g2);
-            if (!Solve(Inertia(m0, r0) + Inertia(m1, r1) + Inertia(m2, r2), torque, out Vector3 omega)) return;
-            g0 -= m0 * Vector3.Cross(omega, r0);
-            g1 -= m1 * Vector3.Cross(omega, r1);
-            g2 -= m2 * Vector3.Cross(omega, r2);
+            Vector3 q0 = m0 * r0, q1 = m1 * r1, q2 = m2 * r2;
+            Vector3 diag = q0 * r0 + q1 * r1 + q2 * r2;
+            Vector3 off = q0 * new Vector3(r0.Y, r0.Z, r0.X) + q1 * new Vector3(r1.Y, r1.Z, r1.X) + q2 * new Vector3(r2.Y, r2.Z, r2.X);
+            if (!Solve(diag, off, torque, out Vector3 omega)) return;
+            g0 -= Vector3.Cross(omega, q0);
+            g1 -= Vector3.Cross(omega, q1);
+            g2 -= Vector3.Cross(omega, q2);
         }
 
-        // m (|r|^2 I - r r^T): the point's inertia about the centre.
-        static Mat3 Inertia(float m, Vector3 r)
+        // Solves I omega = torque for the inertia I = tr(S) 1 - S of the second moments S
+        // (diag = (Sxx, Syy, Szz), off = (Sxy, Syz, Szx)) by the adjugate of the symmetric I.
+        // I is singular only when the points are collinear; the correction is then skipped
+        // (such an element has collapsed and its gradient is degenerate anyway).
+        static bool Solve(Vector3 diag, Vector3 off, Vector3 torque, out Vector3 omega)
         {
-            float xx = m * r.X * r.X, yy = m * r.Y * r.Y, zz = m * r.Z * r.Z;
-            float xy = -m * r.X * r.Y, xz = -m * r.X * r.Z, yz = -m * r.Y * r.Z;
-            return new Mat3(new Vector3(yy + zz, xy, xz), new Vector3(xy, xx + zz, yz), new Vector3(xz, yz, xx + yy));
-        }
-
-        // The inertia of 3 or 4 points is singular only when they are collinear; the correction
-        // is then skipped (such an element has collapsed and its gradient is degenerate anyway).
-        static bool Solve(in Mat3 inertia, Vector3 torque, out Vector3 omega)
-        {
-            float det = inertia.Determinant;
-            float scale = inertia.C0.X + inertia.C1.Y + inertia.C2.Z;
+            float a = diag.Y + diag.Z, b = diag.X + diag.Z, c = diag.X + diag.Y;
+            float d = -off.X, f = -off.Y, e = -off.Z; // Ixy, Iyz, Ixz
+            float ca = b * c - f * f, cb = a * c - e * e, cc = a * b - d * d;
+            float cd = e * f - d * c, ce = d * f - b * e, cf = d * e - a * f;
+            float det = a * ca + d * cd + e * ce;
+            float scale = a + b + c;
             if (!(det > 1e-9f * scale * scale * scale))
             {
                 omega = default;
                 return false;
             }
-            omega = inertia.Inverse() * torque;
+            float inv = 1f / det;
+            omega = new Vector3(
+                ca * torque.X + cd * torque.Y + ce * torque.Z,
+                cd * torque.X + cb * torque.Y + cf * torque.Z,
+                ce * torque.X + cf * torque.Y + cc * torque.Z) * inv;
             return true;
         }
     }
