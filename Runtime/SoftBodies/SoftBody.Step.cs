@@ -20,7 +20,8 @@ namespace Fulcrum.SoftBodies
         /// <summary>
         /// One XPBD substep of length <paramref name="h"/>: predict with gravity; per iteration
         /// project contacts, the elastic constraints (multipliers start at zero and are kept
-        /// across the iterations) and attachments; velocities from the change in position.
+        /// across the iterations) and attachments; velocities from the change in position; then
+        /// the stiffness-proportional damping as a velocity pass (<see cref="RayleighDamping"/>).
         /// </summary>
         internal void Substep(float h, RigidCoupling coupling, ParallelRanges? pool)
         {
@@ -36,33 +37,46 @@ namespace Fulcrum.SoftBodies
             Array.Clear(TetLambda, 0, TetLambda.Length);
             Array.Clear(TriLambda, 0, TriLambda.Length);
             Array.Clear(BendLambda, 0, BendLambda.Length);
-            float gamma = DampingTime / h;
             for (int iteration = 0; iteration < Iterations; iteration++)
             {
                 // Contacts before the elastic pass: projected after it, they keep re-straining
                 // the elements that touch the ground, and a stiff body settles with that strain
                 // locked in (a cube at E = 1e9 Pa kept 1.2e4 J; this order leaves 185 J).
                 if (CollideWithShapes) Contacts.Solve(World, this, h, coupling);
-                if (Tets.Length > 0) RunColors(TetJob(h, gamma), TetColors, pool);
-                if (Tris.Length > 0)
-                {
-                    _membraneJob ??= new MembraneRangeJob(this);
-                    _membraneJob.H = h;
-                    _membraneJob.Gamma = gamma;
-                    RunColors(_membraneJob, TriColors, pool);
-                }
-                if (Bends.Length > 0)
-                {
-                    _bendingJob ??= new BendingRangeJob(this);
-                    _bendingJob.H = h;
-                    _bendingJob.Gamma = gamma;
-                    RunColors(_bendingJob, BendColors, pool);
-                }
+                RunElements(h, damping: false, pool);
                 if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
             }
             SelfContacts?.Solve(X, W);
             float invH = 1f / h;
             for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;
+            if (DampingTime > 0f)
+            {
+                for (int k = 0; k < Attachments.Length; k++) AttachedVelocity[k] = V[Attachments[k].Vertex];
+                RunElements(h, damping: true, pool);
+                if (Attachments.Length > 0) AttachmentSolver.HandDampingToBodies(World, Attachments, X, V, M, AttachedVelocity, coupling);
+            }
+        }
+
+        /// <summary>Every element family, colour by colour: the position solve, or the damping pass.</summary>
+        void RunElements(float h, bool damping, ParallelRanges? pool)
+        {
+            if (Tets.Length > 0) RunColors(TetJob(h, damping), TetColors, pool);
+            if (Tris.Length > 0)
+            {
+                _membraneJob ??= new MembraneRangeJob(this);
+                _membraneJob.H = h;
+                _membraneJob.DampingTime = DampingTime;
+                _membraneJob.Damping = damping;
+                RunColors(_membraneJob, TriColors, pool);
+            }
+            if (Bends.Length > 0)
+            {
+                _bendingJob ??= new BendingRangeJob(this);
+                _bendingJob.H = h;
+                _bendingJob.DampingTime = DampingTime;
+                _bendingJob.Damping = damping;
+                RunColors(_bendingJob, BendColors, pool);
+            }
         }
 
         /// <summary>Once per world step, after the substeps.</summary>
@@ -71,20 +85,22 @@ namespace Fulcrum.SoftBodies
             if (Plasticity.Enabled && Tets.Length > 0) PlasticFlow.Apply(this, dt);
         }
 
-        RangeJob TetJob(float h, float gamma)
+        RangeJob TetJob(float h, bool damping)
         {
             if (Material.Model == MaterialModel.NeoHookean)
             {
                 var job = (TetRangeJob<NeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<NeoHookeanEnergy>(this, ClassicModel));
                 job.H = h;
-                job.Gamma = gamma;
+                job.DampingTime = DampingTime;
+                job.Damping = damping;
                 return job;
             }
             else
             {
                 var job = (TetRangeJob<StableNeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<StableNeoHookeanEnergy>(this, StableModel));
                 job.H = h;
-                job.Gamma = gamma;
+                job.DampingTime = DampingTime;
+                job.Damping = damping;
                 return job;
             }
         }

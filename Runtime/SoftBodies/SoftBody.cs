@@ -24,6 +24,9 @@ namespace Fulcrum.SoftBodies
         internal readonly Vector3[] V;
         internal readonly float[] W;
         internal readonly float[] M;
+        // W, and also 0 at vertices attached to rigid bodies: the torque-free projection skips
+        // elements with such a vertex, whose impulses are shared with a body.
+        internal readonly float[] FreeW;
 
         // Elements in colour order; *Colors[c] .. *Colors[c + 1] is colour c.
         internal readonly TetElement[] Tets;
@@ -39,6 +42,7 @@ namespace Fulcrum.SoftBodies
         internal readonly int[] BendColors;
         internal readonly float[] BendLambda;
         internal readonly Attachment[] Attachments;
+        internal readonly Vector3[] AttachedVelocity;   // attached vertices' velocity before the damping pass
         internal readonly ProbeBinding[] Probes;
 
         internal readonly StableNeoHookeanEnergy StableModel;
@@ -79,6 +83,7 @@ namespace Fulcrum.SoftBodies
             V = new Vector3[n];
             W = new float[n];
             M = new float[n];
+            FreeW = new float[n];
             _scratch = new float[2 * n];
 
             Quaternion rotation = Mathematics.Validate.Rotation(def.Rotation, "softBody.Rotation");
@@ -190,6 +195,9 @@ namespace Fulcrum.SoftBodies
                 }
             }
             Attachments = attachments.ToArray();
+            AttachedVelocity = new Vector3[Attachments.Length];
+            Array.Copy(W, FreeW, n);
+            for (int k = 0; k < Attachments.Length; k++) FreeW[Attachments[k].Vertex] = 0f;
             Probes = ProbeBinder.Bind(mesh, def.Probes);
             if (def.SelfCollision) SelfContacts = new SelfCollision(mesh, def.CollisionRadius);
         }
@@ -336,7 +344,14 @@ namespace Fulcrum.SoftBodies
             CheckVertex(vertex);
             ThrowIfStepping();
             W[vertex] = pinned ? 0f : 1f / M[vertex];
+            FreeW[vertex] = IsAttached(vertex) ? 0f : W[vertex];
             if (pinned) V[vertex] = Vector3.Zero;
+        }
+
+        bool IsAttached(int vertex)
+        {
+            for (int k = 0; k < Attachments.Length; k++) if (Attachments[k].Vertex == vertex) return true;
+            return false;
         }
 
         void CheckVertex(int vertex)

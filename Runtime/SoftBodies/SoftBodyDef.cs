@@ -44,7 +44,11 @@ namespace Fulcrum.SoftBodies
         /// <summary>
         /// Stiffness-proportional (Rayleigh) damping time, seconds: each elastic constraint is
         /// damped as if by a dashpot of stiffness times this time, so a mode of angular
-        /// frequency w gets damping ratio w * time / 2 whatever the step. &gt;= 0. Default: 0.01 s.
+        /// frequency w gets damping ratio w * time / 2 whatever the step. Applied as an implicit
+        /// velocity pass after each substep: it only ever removes kinetic energy and leaves linear
+        /// and angular momentum and rigid rotation untouched. 0.01 s gives a 0.4 m rubber block
+        /// (fundamental ~38 Hz) a restitution of 0.33; 0.001 s (damping ratio ~0.1 there, a
+        /// rubber-like loss) gives 0.48, but soft jellies then ring for longer than 3 s. &gt;= 0. Default: 0.01 s.
         /// </summary>
         public float DampingTime;
         /// <summary>Velocity damping, 1/s (v /= 1 + c h per substep, the stable form of exp(-c t)). &gt;= 0. Default: 0.</summary>

@@ -122,6 +122,25 @@ namespace Fulcrum.SoftBodies
             b.Awake[slot] = true;
         }
 
+        /// <summary>
+        /// Applies a velocity impulse <paramref name="impulse"/> (kg m/s) at <paramref name="point"/>
+        /// to a dynamic body: its velocity changes now and its pose through the later substeps.
+        /// </summary>
+        public void Kick(int slot, Vector3 point, Vector3 impulse)
+        {
+            BodyStorage b = _bodies;
+            if (b.Type[slot] != BodyType.Dynamic) return;
+            int e = _entryOfSlot[slot];
+            if (e < 0) return;
+            Vector3 dv = impulse * b.InverseMass[slot];
+            Vector3 dw = b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], impulse);
+            _linearDrift[e] += dv;
+            _angularDrift[e] += dw;
+            b.LinearVelocity[slot] += dv;
+            b.AngularVelocity[slot] += dw;
+            b.Awake[slot] = true;
+        }
+
         void Grow(int capacity)
         {
             Array.Resize(ref _slot, capacity);

@@ -31,6 +31,27 @@ namespace Fulcrum.SoftBodies
             }
         }
 
+        /// <summary>
+        /// After the damping pass: an attached vertex moves with its body, so the velocity the
+        /// pass took from it (m dv, against <paramref name="before"/>) is handed to the body,
+        /// and the vertex takes the body's point velocity again. Left on the vertex alone, the
+        /// attachment dragged the body back to it every substep and a hanging box jittered.
+        /// </summary>
+        public static void HandDampingToBodies(World world, Attachment[] attachments, Vector3[] x, Vector3[] v, float[] m,
+            Vector3[] before, RigidCoupling coupling)
+        {
+            BodyStorage b = world.Bodies;
+            for (int k = 0; k < attachments.Length; k++)
+            {
+                ref Attachment a = ref attachments[k];
+                int slot = a.BodySlot;
+                if (b.Generation[slot] != a.BodyGeneration || b.ActiveIndex[slot] < 0 || b.Type[slot] != BodyType.Dynamic) continue;
+                int i = a.Vertex;
+                coupling.Kick(slot, x[i], m[i] * (v[i] - before[k]));
+                v[i] = coupling.PointVelocity(slot, x[i]);
+            }
+        }
+
         /// <summary>Tracks every live body that has vertices attached.</summary>
         public static void Track(World world, Attachment[] attachments, RigidCoupling coupling)
         {

@@ -1,11 +1,15 @@
 namespace Fulcrum.SoftBodies
 {
-    /// <summary>One colour range of tets for <see cref="ParallelRanges"/>; the model is a type argument so the loop is specialised.</summary>
+    /// <summary>
+    /// One colour range of tets for <see cref="ParallelRanges"/>: the position solve, or with
+    /// <see cref="Damping"/> the velocity damping pass. The model is a type argument so the loop is specialised.
+    /// </summary>
     internal sealed class TetRangeJob<TModel> : RangeJob where TModel : struct, IHyperelasticModel
     {
         readonly SoftBody _body;
         readonly TModel _model;
-        public float H, Gamma;
+        public float H, DampingTime;
+        public bool Damping;
 
         public TetRangeJob(SoftBody body, in TModel model)
         {
@@ -13,7 +17,10 @@ namespace Fulcrum.SoftBodies
             _model = model;
         }
 
-        public override void Execute(int start, int end) =>
-            XpbdTetSolver.Solve(_model, _body.Tets, _body.TetLambda, _body.X, _body.XPrev, _body.W, start, end, H, Gamma);
+        public override void Execute(int start, int end)
+        {
+            if (Damping) RayleighDamping.Tets(_model, _body.Tets, _body.X, _body.V, _body.W, start, end, H, DampingTime);
+            else XpbdTetSolver.Solve(_model, _body.Tets, _body.TetLambda, _body.X, _body.XPrev, _body.W, _body.FreeW, start, end, H);
+        }
     }
 }

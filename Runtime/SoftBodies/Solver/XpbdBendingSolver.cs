@@ -9,11 +9,11 @@ namespace Fulcrum.SoftBodies
     /// </summary>
     internal static class XpbdBendingSolver
     {
-        public static void Solve(BendElement[] bends, float[] lambdas, Vector3[] x, Vector3[] xPrev, float[] w,
-            int start, int end, float h, float gamma)
+        /// <summary>One undamped Gauss-Seidel pass over hinges [start, end), torque-free like the tets' (<see cref="TorqueFree"/>).</summary>
+        public static void Solve(BendElement[] bends, float[] lambdas, Vector3[] x, Vector3[] xPrev, float[] w, float[] free,
+            int start, int end, float h)
         {
             float invH2 = 1f / (h * h);
-            float s = 1f + gamma;
             for (int e = start; e < end; e++)
             {
                 ref BendElement b = ref bends[e];
@@ -28,16 +28,17 @@ namespace Fulcrum.SoftBodies
                 float k = wa * ga.LengthSquared() + wb * gb.LengthSquared() + wc * gc.LengthSquared() + wd * gd.LengthSquared();
                 float alpha = b.Compliance * invH2;
                 float r = -c - alpha * lambdas[e];
-                if (gamma > 0f)
-                    r -= gamma * (Vector3.Dot(ga, xa - xPrev[b.A]) + Vector3.Dot(gb, xb - xPrev[b.B]) + Vector3.Dot(gc, xc - xPrev[b.C]) + Vector3.Dot(gd, xd - xPrev[b.D]));
-                float denom = s * k + alpha;
+                float denom = k + alpha;
                 if (!(denom > 1e-30f)) continue;
                 float dl = r / denom;
                 lambdas[e] += dl;
-                x[b.A] = xa + wa * dl * ga;
-                x[b.B] = xb + wb * dl * gb;
-                x[b.C] = xc + wc * dl * gc;
-                x[b.D] = xd + wd * dl * gd;
+                ga *= dl; gb *= dl; gc *= dl; gd *= dl;
+                if (free[b.A] > 0f && free[b.B] > 0f && free[b.C] > 0f && free[b.D] > 0f)
+                    TorqueFree.Project(xPrev[b.A], xPrev[b.B], xPrev[b.C], xPrev[b.D], wa, wb, wc, wd, ref ga, ref gb, ref gc, ref gd);
+                x[b.A] = xa + wa * ga;
+                x[b.B] = xb + wb * gb;
+                x[b.C] = xc + wc * gc;
+                x[b.D] = xd + wd * gd;
             }
         }
     }

@@ -9,13 +9,13 @@ namespace Fulcrum.SoftBodies
     /// </summary>
     internal static class XpbdMembraneSolver
     {
+        /// <summary>One undamped Gauss-Seidel pass over triangles [start, end), torque-free like the tets' (<see cref="TorqueFree"/>).</summary>
         public static void Solve(in MembraneEnergy model, float thickness, TriangleElement[] tris, Vector2[] lambdas, Vector3[] x, Vector3[] xPrev,
-            float[] w, int start, int end, float h, float gamma)
+            float[] w, float[] free, int start, int end, float h)
         {
             float invH2 = 1f / (h * h);
             float alphaDev = invH2 / (model.Mu * thickness);
             float alphaVol = invH2 / (model.Lambda * thickness);
-            float s = 1f + gamma;
             for (int e = start; e < end; e++)
             {
                 ref TriangleElement t = ref tris[e];
@@ -37,18 +37,15 @@ namespace Fulcrum.SoftBodies
                 ref Vector2 lambda = ref lambdas[e];
                 float rD = -cD - aD * lambda.X;
                 float rH = -cH - aH * lambda.Y;
-                if (gamma > 0f)
-                {
-                    Vector3 v0 = x0 - xPrev[t.A], v1 = x1 - xPrev[t.B], v2 = x2 - xPrev[t.C];
-                    rD -= gamma * (Vector3.Dot(d0, v0) + Vector3.Dot(d1, v1) + Vector3.Dot(d2, v2));
-                    rH -= gamma * (Vector3.Dot(g0, v0) + Vector3.Dot(g1, v1) + Vector3.Dot(g2, v2));
-                }
-                if (!XpbdConstraintPair.Solve(s * kDD + aD, s * kDH, s * kHH + aH, rD, rH, out float dlD, out float dlH)) continue;
+                if (!XpbdConstraintPair.Solve(kDD + aD, kDH, kHH + aH, rD, rH, out float dlD, out float dlH)) continue;
                 lambda.X += dlD;
                 lambda.Y += dlH;
-                x[t.A] = x0 + w0 * (dlD * d0 + dlH * g0);
-                x[t.B] = x1 + w1 * (dlD * d1 + dlH * g1);
-                x[t.C] = x2 + w2 * (dlD * d2 + dlH * g2);
+                Vector3 q0 = dlD * d0 + dlH * g0, q1 = dlD * d1 + dlH * g1, q2 = dlD * d2 + dlH * g2;
+                if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f)
+                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], w0, w1, w2, ref q0, ref q1, ref q2);
+                x[t.A] = x0 + w0 * q0;
+                x[t.B] = x1 + w1 * q1;
+                x[t.C] = x2 + w2 * q2;
             }
         }
     }

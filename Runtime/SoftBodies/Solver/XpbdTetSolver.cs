@@ -13,19 +13,18 @@ namespace Fulcrum.SoftBodies
     internal static class XpbdTetSolver
     {
         /// <summary>
-        /// One Gauss-Seidel pass over tets [start, end). <paramref name="gamma"/> is the XPBD
-        /// damping factor (damping time / h): rows get (1 + gamma) on their stiffness part and
-        /// -gamma grad C . (x - x_prev) on the right-hand side (Macklin et al. 2016, eq. 26).
+        /// One Gauss-Seidel pass over tets [start, end). Undamped: damping is a velocity pass
+        /// after the substep (<see cref="RayleighDamping"/>). Each correction is made free of
+        /// net angular impulse (<see cref="TorqueFree"/>) unless the tet has a pinned or attached vertex.
         /// </summary>
         public static void Solve<TModel>(in TModel model, TetElement[] tets, Vector2[] lambdas, Vector3[] x, Vector3[] xPrev,
-            float[] w, int start, int end, float h, float gamma)
+            float[] w, float[] free, int start, int end, float h)
             where TModel : struct, IHyperelasticModel
         {
             float invH2 = 1f / (h * h);
             // Compliance per unit volume over h^2; divided by each tet's rest volume below.
             float alphaDev = invH2 / model.DeviatoricStiffness;
             float alphaVol = invH2 / model.HydrostaticStiffness;
-            float s = 1f + gamma;
             for (int e = start; e < end; e++)
             {
                 ref TetElement t = ref tets[e];
@@ -45,19 +44,16 @@ namespace Fulcrum.SoftBodies
                 ref Vector2 lambda = ref lambdas[e];
                 float rD = -cD - aD * lambda.X;
                 float rH = -cH - aH * lambda.Y;
-                if (gamma > 0f)
-                {
-                    Vector3 v0 = x0 - xPrev[t.A], v1 = x1 - xPrev[t.B], v2 = x2 - xPrev[t.C], v3 = x3 - xPrev[t.D];
-                    rD -= gamma * (Vector3.Dot(d0, v0) + Vector3.Dot(d1, v1) + Vector3.Dot(d2, v2) + Vector3.Dot(d3, v3));
-                    rH -= gamma * (Vector3.Dot(h0, v0) + Vector3.Dot(h1, v1) + Vector3.Dot(h2, v2) + Vector3.Dot(h3, v3));
-                }
-                if (!XpbdConstraintPair.Solve(s * kDD + aD, s * kDH, s * kHH + aH, rD, rH, out float dlD, out float dlH)) continue;
+                if (!XpbdConstraintPair.Solve(kDD + aD, kDH, kHH + aH, rD, rH, out float dlD, out float dlH)) continue;
                 lambda.X += dlD;
                 lambda.Y += dlH;
-                x[t.A] = x0 + w0 * (dlD * d0 + dlH * h0);
-                x[t.B] = x1 + w1 * (dlD * d1 + dlH * h1);
-                x[t.C] = x2 + w2 * (dlD * d2 + dlH * h2);
-                x[t.D] = x3 + w3 * (dlD * d3 + dlH * h3);
+                Vector3 g0 = dlD * d0 + dlH * h0, g1 = dlD * d1 + dlH * h1, g2 = dlD * d2 + dlH * h2, g3 = dlD * d3 + dlH * h3;
+                if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f && free[t.D] > 0f)
+                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], xPrev[t.D], w0, w1, w2, w3, ref g0, ref g1, ref g2, ref g3);
+                x[t.A] = x0 + w0 * g0;
+                x[t.B] = x1 + w1 * g1;
+                x[t.C] = x2 + w2 * g2;
+                x[t.D] = x3 + w3 * g3;
             }
         }
     }
