@@ -1,6 +1,7 @@
 #if NET
 using System;
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using Fulcrum.Collision;
 
 namespace Fulcrum.Dynamics
@@ -135,11 +136,20 @@ namespace Fulcrum.Dynamics
         struct Lanes
         {
             public WideVector3 VA, WA, VB, WB, DpA, DpB, DThetaA, DThetaB;
+            // The floats beside the velocities in SolverBody (inverse mass, the dynamic flag),
+            // written back unchanged by the transposing scatter.
+            public Vector<float> PadVA, PadWA, PadVB, PadWB;
         }
 
         static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, out Lanes l, bool motion)
         {
             l = default;
+            if (SolverBodyLanes.IsSupported)
+            {
+                GatherSide(bodies, laneBodies, 2 * groupOffset, motion, out l.VA, out l.PadVA, out l.WA, out l.PadWA, out l.DpA, out l.DThetaA);
+                GatherSide(bodies, laneBodies, 2 * groupOffset + 1, motion, out l.VB, out l.PadVB, out l.WB, out l.PadWB, out l.DpB, out l.DThetaB);
+                return;
+            }
             int width = Width;
             for (int lane = 0; lane < width; lane++)
             {
@@ -157,8 +167,66 @@ namespace Fulcrum.Dynamics
             }
         }
 
+        // One side (A: at = 2 groupOffset, B: at + 1) of the eight lanes, by transposes.
+        static void GatherSide(SolverBody[] bodies, int[] laneBodies, int at, bool motion,
+            out WideVector3 v, out Vector<float> padV, out WideVector3 w, out Vector<float> padW, out WideVector3 dp, out WideVector3 dTheta)
+        {
+            ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
+            ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
+            ref float b2 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 4);
+            ref float b3 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 6);
+            ref float b4 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 8);
+            ref float b5 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 10);
+            ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
+            ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Linear,
+                out Vector<float> vx, out Vector<float> vy, out Vector<float> vz, out padV);
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Angular,
+                out Vector<float> wx, out Vector<float> wy, out Vector<float> wz, out padW);
+            v = new WideVector3 { X = vx, Y = vy, Z = vz };
+            w = new WideVector3 { X = wx, Y = wy, Z = wz };
+            if (!motion)
+            {
+                dp = default;
+                dTheta = default;
+                return;
+            }
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Displacement,
+                out _, out Vector<float> px, out Vector<float> py, out Vector<float> pz);
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Rotation,
+                out Vector<float> qx, out Vector<float> qy, out Vector<float> qz, out Vector<float> qw);
+            dp = new WideVector3 { X = px, Y = py, Z = pz };
+            // SolverBody.DeltaAngle, lane by lane: 2 x the vector part, sign chosen by w.
+            Vector<float> twice = Vector.ConditionalSelect(Vector.LessThan(qw, Vector<float>.Zero), new Vector<float>(-2f), new Vector<float>(2f));
+            dTheta = new WideVector3 { X = qx * twice, Y = qy * twice, Z = qz * twice };
+        }
+
+        static void ScatterSide(SolverBody[] bodies, int[] laneBodies, int at, in WideVector3 v, Vector<float> padV, in WideVector3 w, Vector<float> padW)
+        {
+            // Only dynamic bodies are written (the flag is the angular block's fourth float).
+            int write = (int)Vector256.ExtractMostSignificantBits(
+                ~Vector256.Equals(Vector.AsVectorInt32(padW).AsVector256(), Vector256<int>.Zero));
+            if (write == 0) return;
+            ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
+            ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
+            ref float b2 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 4);
+            ref float b3 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 6);
+            ref float b4 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 8);
+            ref float b5 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 10);
+            ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
+            ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
+            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Linear, v.X, v.Y, v.Z, padV);
+            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Angular, w.X, w.Y, w.Z, padW);
+        }
+
         static void Scatter(SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
+            if (SolverBodyLanes.IsSupported)
+            {
+                ScatterSide(bodies, laneBodies, 2 * groupOffset, l.VA, l.PadVA, l.WA, l.PadWA);
+                ScatterSide(bodies, laneBodies, 2 * groupOffset + 1, l.VB, l.PadVB, l.WB, l.PadWB);
+                return;
+            }
             int width = Width;
             for (int lane = 0; lane < width; lane++)
             {
