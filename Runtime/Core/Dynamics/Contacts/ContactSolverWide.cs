@@ -1,6 +1,7 @@
 #if NET
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using Fulcrum.Collision;
 
@@ -143,13 +144,13 @@ namespace Fulcrum.Dynamics
 
         static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, out Lanes l, bool motion)
         {
-            l = default;
             if (SolverBodyLanes.IsSupported)
             {
                 GatherSide(bodies, laneBodies, 2 * groupOffset, motion, out l.VA, out l.PadVA, out l.WA, out l.PadWA, out l.DpA, out l.DThetaA);
                 GatherSide(bodies, laneBodies, 2 * groupOffset + 1, motion, out l.VB, out l.PadVB, out l.WB, out l.PadWB, out l.DpB, out l.DThetaB);
                 return;
             }
+            l = default;
             int width = Width;
             for (int lane = 0; lane < width; lane++)
             {
@@ -168,6 +169,7 @@ namespace Fulcrum.Dynamics
         }
 
         // One side (A: at = 2 groupOffset, B: at + 1) of the eight lanes, by transposes.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void GatherSide(SolverBody[] bodies, int[] laneBodies, int at, bool motion,
             out WideVector3 v, out Vector<float> padV, out WideVector3 w, out Vector<float> padW, out WideVector3 dp, out WideVector3 dTheta)
         {
@@ -201,6 +203,7 @@ namespace Fulcrum.Dynamics
             dTheta = new WideVector3 { X = qx * twice, Y = qy * twice, Z = qz * twice };
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void ScatterSide(SolverBody[] bodies, int[] laneBodies, int at, in WideVector3 v, Vector<float> padV, in WideVector3 w, Vector<float> padW)
         {
             // Only dynamic bodies are written (the flag is the angular block's fourth float).
@@ -248,6 +251,7 @@ namespace Fulcrum.Dynamics
         static Vector3 Get(ref WideVector3 v, int lane) =>
             new Vector3(WideVector3.Lane(ref v.X, lane), WideVector3.Lane(ref v.Y, lane), WideVector3.Lane(ref v.Z, lane));
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<float> RowVelocity(in WideRow r, in WideVector3 d, in Lanes l)
         {
             WideVector3 dv = l.VB;
@@ -255,6 +259,7 @@ namespace Fulcrum.Dynamics
             return WideVector3.Dot(d, dv) + WideVector3.Dot(r.AngularB, l.WB) - WideVector3.Dot(r.AngularA, l.WA);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void ApplyNormal(in WideContact w, in WideRow r, Vector<float> impulse, ref Lanes l)
         {
             l.VA.SubtractScaled(w.Normal, w.InvMassA * impulse);
@@ -278,6 +283,7 @@ namespace Fulcrum.Dynamics
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void WarmRow(in WideContact w, in WideRow r, in WideVector3 d, ref Lanes l)
         {
             l.VA.SubtractScaled(d, w.InvMassA * r.Impulse);
@@ -332,6 +338,7 @@ namespace Fulcrum.Dynamics
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void Terms(Vector<float> s, in WideContact w, Vector<float> inverseStep, Vector<float> maxPush, bool useBias,
             out Vector<float> bias, out Vector<float> massScale, out Vector<float> impulseScale)
         {
@@ -350,6 +357,7 @@ namespace Fulcrum.Dynamics
             }
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void SolvePair(ref WideContact w, ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22,
             Vector<float> drift, Vector<float> inverseStep, Vector<float> maxPush, bool useBias, ref Lanes l)
         {
