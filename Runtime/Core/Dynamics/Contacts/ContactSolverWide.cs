@@ -66,8 +66,9 @@ namespace Fulcrum.Dynamics
         public static void Load(ref WideContact w, int[] laneBodies, int groupOffset, ReadOnlySpan<int> source,
             ContactConstraint[] contacts, ContactConstraintPoint[] points, SolverBody[] bodies, int[] laneSlots)
         {
-            w = default;
             int width = Width;
+            // Every field of a used lane is written below: only padding lanes need the clear.
+            if (source.Length < width) w = default;
             for (int lane = 0; lane < width; lane++)
             {
                 int at = groupOffset + lane;
@@ -131,6 +132,8 @@ namespace Fulcrum.Dynamics
             WideVector3.Lane(ref p.Separation, lane) = s.Separation;
             WideVector3.Lane(ref p.RelativeVelocity, lane) = s.RelativeVelocity;
             WideVector3.Lane(ref p.MaxNormalImpulse, lane) = s.MaxNormalImpulse;
+            WideVector3.Lane(ref p.Applied, lane) = 0;
+            WideVector3.Lane(ref p.LastSubstep, lane) = 0;
         }
 
         /// <summary>The bodies of a group in lanes: velocities and (for the separation update) motion so far.</summary>
