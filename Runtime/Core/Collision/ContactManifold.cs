@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.Collision
 {
@@ -80,8 +81,13 @@ namespace Fulcrum.Collision
         public Vector3 RollingImpulse;
 
         /// <summary>Point <paramref name="i"/> (0..3) of <paramref name="m"/> by reference.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static ref ContactPoint Point(ref ContactManifold m, int i)
         {
+#if NET
+            // The four points are consecutive fields of one type (sequential layout).
+            return ref Unsafe.Add(ref m.Point0, (uint)i > 3u ? 3 : i);
+#else
             switch (i)
             {
                 case 0: return ref m.Point0;
@@ -89,6 +95,7 @@ namespace Fulcrum.Collision
                 case 2: return ref m.Point2;
                 default: return ref m.Point3;
             }
+#endif
         }
     }
 }

@@ -411,7 +411,9 @@ namespace Fulcrum
         {
             ContactGraph g = ContactGraph;
             int n = _sortCount;
-            if (n > 1) Array.Sort(_sortKeys, _sortItems, 0, n);
+            // Pair keys are unique and the contact list keeps its order between steps, so the
+            // keys usually arrive sorted: check that in one pass before paying for a sort.
+            if (n > 1 && !IsSorted(_sortKeys, n)) Array.Sort(_sortKeys, _sortItems, 0, n);
 
             float slop = _settings.LinearSlop;
             float maxPenetration = 0;
@@ -433,6 +435,13 @@ namespace Fulcrum
             }
             StatContactCount = touching;
             if (maxPenetration > StatMaxPenetration) StatMaxPenetration = maxPenetration;
+        }
+
+        static bool IsSorted(ulong[] keys, int n)
+        {
+            for (int k = 1; k < n; k++)
+                if (keys[k] < keys[k - 1]) return false;
+            return true;
         }
 
         // The solver wrote this step's impulses into the contact set; hand them back to the

@@ -1,6 +1,8 @@
 #if NET
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using Fulcrum.Collision;
 
 namespace Fulcrum.Dynamics
@@ -64,8 +66,9 @@ namespace Fulcrum.Dynamics
         public static void Load(ref WideContact w, int[] laneBodies, int groupOffset, ReadOnlySpan<int> source,
             ContactConstraint[] contacts, ContactConstraintPoint[] points, SolverBody[] bodies, int[] laneSlots)
         {
-            w = default;
             int width = Width;
+            // Every field of a used lane is written below: only padding lanes need the clear.
+            if (source.Length < width) w = default;
             for (int lane = 0; lane < width; lane++)
             {
                 int at = groupOffset + lane;
@@ -129,16 +132,27 @@ namespace Fulcrum.Dynamics
             WideVector3.Lane(ref p.Separation, lane) = s.Separation;
             WideVector3.Lane(ref p.RelativeVelocity, lane) = s.RelativeVelocity;
             WideVector3.Lane(ref p.MaxNormalImpulse, lane) = s.MaxNormalImpulse;
+            WideVector3.Lane(ref p.Applied, lane) = 0;
+            WideVector3.Lane(ref p.LastSubstep, lane) = 0;
         }
 
         /// <summary>The bodies of a group in lanes: velocities and (for the separation update) motion so far.</summary>
         struct Lanes
         {
             public WideVector3 VA, WA, VB, WB, DpA, DpB, DThetaA, DThetaB;
+            // The floats beside the velocities in SolverBody (inverse mass, the dynamic flag),
+            // written back unchanged by the transposing scatter.
+            public Vector<float> PadVA, PadWA, PadVB, PadWB;
         }
 
         static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, out Lanes l, bool motion)
         {
+            if (SolverBodyLanes.IsSupported)
+            {
+                GatherSide(bodies, laneBodies, 2 * groupOffset, motion, out l.VA, out l.PadVA, out l.WA, out l.PadWA, out l.DpA, out l.DThetaA);
+                GatherSide(bodies, laneBodies, 2 * groupOffset + 1, motion, out l.VB, out l.PadVB, out l.WB, out l.PadWB, out l.DpB, out l.DThetaB);
+                return;
+            }
             l = default;
             int width = Width;
             for (int lane = 0; lane < width; lane++)
@@ -157,8 +171,68 @@ namespace Fulcrum.Dynamics
             }
         }
 
+        // One side (A: at = 2 groupOffset, B: at + 1) of the eight lanes, by transposes.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void GatherSide(SolverBody[] bodies, int[] laneBodies, int at, bool motion,
+            out WideVector3 v, out Vector<float> padV, out WideVector3 w, out Vector<float> padW, out WideVector3 dp, out WideVector3 dTheta)
+        {
+            ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
+            ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
+            ref float b2 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 4);
+            ref float b3 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 6);
+            ref float b4 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 8);
+            ref float b5 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 10);
+            ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
+            ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Linear,
+                out Vector<float> vx, out Vector<float> vy, out Vector<float> vz, out padV);
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Angular,
+                out Vector<float> wx, out Vector<float> wy, out Vector<float> wz, out padW);
+            v = new WideVector3 { X = vx, Y = vy, Z = vz };
+            w = new WideVector3 { X = wx, Y = wy, Z = wz };
+            if (!motion)
+            {
+                dp = default;
+                dTheta = default;
+                return;
+            }
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Displacement,
+                out _, out Vector<float> px, out Vector<float> py, out Vector<float> pz);
+            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Rotation,
+                out Vector<float> qx, out Vector<float> qy, out Vector<float> qz, out Vector<float> qw);
+            dp = new WideVector3 { X = px, Y = py, Z = pz };
+            // SolverBody.DeltaAngle, lane by lane: 2 x the vector part, sign chosen by w.
+            Vector<float> twice = Vector.ConditionalSelect(Vector.LessThan(qw, Vector<float>.Zero), new Vector<float>(-2f), new Vector<float>(2f));
+            dTheta = new WideVector3 { X = qx * twice, Y = qy * twice, Z = qz * twice };
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void ScatterSide(SolverBody[] bodies, int[] laneBodies, int at, in WideVector3 v, Vector<float> padV, in WideVector3 w, Vector<float> padW)
+        {
+            // Only dynamic bodies are written (the flag is the angular block's fourth float).
+            int write = (int)Vector256.ExtractMostSignificantBits(
+                ~Vector256.Equals(Vector.AsVectorInt32(padW).AsVector256(), Vector256<int>.Zero));
+            if (write == 0) return;
+            ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
+            ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
+            ref float b2 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 4);
+            ref float b3 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 6);
+            ref float b4 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 8);
+            ref float b5 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 10);
+            ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
+            ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
+            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Linear, v.X, v.Y, v.Z, padV);
+            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Angular, w.X, w.Y, w.Z, padW);
+        }
+
         static void Scatter(SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
+            if (SolverBodyLanes.IsSupported)
+            {
+                ScatterSide(bodies, laneBodies, 2 * groupOffset, l.VA, l.PadVA, l.WA, l.PadWA);
+                ScatterSide(bodies, laneBodies, 2 * groupOffset + 1, l.VB, l.PadVB, l.WB, l.PadWB);
+                return;
+            }
             int width = Width;
             for (int lane = 0; lane < width; lane++)
             {
@@ -180,6 +254,7 @@ namespace Fulcrum.Dynamics
         static Vector3 Get(ref WideVector3 v, int lane) =>
             new Vector3(WideVector3.Lane(ref v.X, lane), WideVector3.Lane(ref v.Y, lane), WideVector3.Lane(ref v.Z, lane));
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<float> RowVelocity(in WideRow r, in WideVector3 d, in Lanes l)
         {
             WideVector3 dv = l.VB;
@@ -187,6 +262,7 @@ namespace Fulcrum.Dynamics
             return WideVector3.Dot(d, dv) + WideVector3.Dot(r.AngularB, l.WB) - WideVector3.Dot(r.AngularA, l.WA);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void ApplyNormal(in WideContact w, in WideRow r, Vector<float> impulse, ref Lanes l)
         {
             l.VA.SubtractScaled(w.Normal, w.InvMassA * impulse);
@@ -210,6 +286,7 @@ namespace Fulcrum.Dynamics
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void WarmRow(in WideContact w, in WideRow r, in WideVector3 d, ref Lanes l)
         {
             l.VA.SubtractScaled(d, w.InvMassA * r.Impulse);
@@ -264,6 +341,7 @@ namespace Fulcrum.Dynamics
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void Terms(Vector<float> s, in WideContact w, Vector<float> inverseStep, Vector<float> maxPush, bool useBias,
             out Vector<float> bias, out Vector<float> massScale, out Vector<float> impulseScale)
         {
@@ -282,6 +360,7 @@ namespace Fulcrum.Dynamics
             }
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void SolvePair(ref WideContact w, ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22,
             Vector<float> drift, Vector<float> inverseStep, Vector<float> maxPush, bool useBias, ref Lanes l)
         {
