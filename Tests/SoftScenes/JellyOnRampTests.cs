@@ -9,13 +9,15 @@ namespace Fulcrum.Tests.SoftScenes
     {
         // jelly-on-ramp.json: a 0.3 m jelly cube (E 5e4 Pa, nu 0.45, 4^3 cells, friction 0.1) set
         // 1 cm above a static convex-hull wedge sloping 25 degrees down towards +x (material
-        // friction 0.1, so every combine mode gives mu = 0.1), and released.
+        // friction 0.1, so every combine mode gives mu = 0.1), and released. jelly-on-mesh-ramp.json
+        // is the same with the wedge's slope face as a two-triangle static mesh.
         const float SlopeDeg = 25f, Mu = 0.1f, G = 9.81f;
 
-        [Test]
-        public void Jelly_slides_down_a_hull_ramp_at_g_sin_minus_mu_cos_and_stays_on_its_surface()
+        [TestCase("jelly-on-ramp")]
+        [TestCase("jelly-on-mesh-ramp")]
+        public void Jelly_slides_down_a_ramp_at_g_sin_minus_mu_cos_and_stays_on_its_surface(string scene)
         {
-            SoftSceneRun run = SoftSceneRun.Load("jelly-on-ramp");
+            SoftSceneRun run = SoftSceneRun.Load(scene);
             SoftBody jelly = run.Body;
             float theta = SlopeDeg * MathF.PI / 180f;
             var normal = new Vector3(MathF.Sin(theta), MathF.Cos(theta), 0);
@@ -52,7 +54,7 @@ namespace Fulcrum.Tests.SoftScenes
             double acceleration = Solve3(ata, atb)[2];
             double expected = G * (MathF.Sin(theta) - Mu * MathF.Cos(theta));
             SoftBodyStats end = jelly.ComputeStats();
-            TestContext.Out.WriteLine($"jelly-on-ramp: acceleration down the slope {acceleration:F3} m/s^2 (fit over {From}..0.9 s) vs g(sin - mu cos) = {expected:F3}; travelled {Vector3.Dot(end.Centroid - start, down):F3} m; lowest vertex {deepest * 1000:F2} mm from the face at worst, at most {highestLowest * 1000:F2} mm above it after {From} s (collision radius {jelly.CollisionRadius * 1000:F1} mm); volume error worst {worstVolume:P2}, {MathF.Abs(end.VolumeRatio - 1):P2} at the end; min J {end.MinJ:F3}; sideways drift {sideways * 1000:F2} mm");
+            TestContext.Out.WriteLine($"{scene}: acceleration down the slope {acceleration:F3} m/s^2 (fit over {From}..0.9 s) vs g(sin - mu cos) = {expected:F3}; travelled {Vector3.Dot(end.Centroid - start, down):F3} m; lowest vertex {deepest * 1000:F2} mm from the face at worst, at most {highestLowest * 1000:F2} mm above it after {From} s (collision radius {jelly.CollisionRadius * 1000:F1} mm); volume error worst {worstVolume:P2}, {MathF.Abs(end.VolumeRatio - 1):P2} at the end; min J {end.MinJ:F3}; sideways drift {sideways * 1000:F2} mm");
 
             Assert.That(acceleration, Is.EqualTo(expected).Within(0.02 * expected), "slides at the Coulomb rate within 2 %");
             float r = jelly.CollisionRadius;
