@@ -71,9 +71,29 @@ namespace Fulcrum.SoftBodies
             // Generated meshes are centred on their origin; a file's mesh is moved so that the
             // scene's position, pins and probes are about its centre, as for every other kind.
             Vector3 centre = sceneMesh is SceneSoftTetGen || sceneMesh is SceneSoftObj ? mesh.Center : Vector3.Zero;
-            SoftBodyDef def = SoftBodyDef.Of(mesh, material, s.Position - centre);
+            Quaternion rotation = Quaternion.Normalize(s.Rotation);
+            SoftBodyDef def = SoftBodyDef.Of(mesh, material, s.Position - Vector3.Transform(centre, rotation));
             def.Name = s.Name;
+            def.Rotation = rotation;
+            def.LinearVelocity = s.Velocity;
             def.InitialDeformation = s.InitialDeformation;
+            if (s.Substeps is int substeps) def.Substeps = substeps;
+            if (s.Iterations is int iterations) def.Iterations = iterations;
+            if (s.DampingTime is float dampingTime) def.DampingTime = dampingTime;
+            if (s.LinearDamping is float linearDamping) def.LinearDamping = linearDamping;
+            if (s.GravityScale is float gravityScale) def.GravityScale = gravityScale;
+            if (s.Friction is float friction) def.Friction = friction;
+            if (s.CollisionRadius is float radius) def.CollisionRadius = radius;
+            if (s.CollideWithShapes is bool shapes) def.CollideWithShapes = shapes;
+            if (s.CollideWithSoftBodies is bool softBodies) def.CollideWithSoftBodies = softBodies;
+            if (s.SelfCollision is bool self) def.SelfCollision = self;
+            if (s.Layer is int layer) def.Layer = layer;
+            if (s.CollidesWith is int[] layers)
+            {
+                uint mask = 0;
+                for (int i = 0; i < layers.Length; i++) mask |= 1u << layers[i];
+                def.CollidesWith = mask;
+            }
             if (sceneMesh is SceneSoftCloth cloth)
             {
                 def.Thickness = cloth.Thickness;

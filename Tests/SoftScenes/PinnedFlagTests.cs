@@ -9,7 +9,7 @@ namespace Fulcrum.Tests.SoftScenes
     {
         // pinned-flag.json: a cloth shell flag 1 x 0.6 m (15 x 9 cells, 0.5 mm thick, E = 1e7 Pa,
         // 300 kg/m^3) laid flat at y = 2 m and pinned to the world along its x = -0.5 m edge,
-        // released to swing down and hang.
+        // released to swing down and hang; damping time 1 ms, linear damping 1/s (air).
         const float Length = 1f, PinX = -0.5f, PinY = 2f;
 
         [Test]
@@ -53,14 +53,16 @@ namespace Fulcrum.Tests.SoftScenes
             Assert.That(pinned, Is.EqualTo(10), "the whole x = -0.5 edge (9 cells: 10 vertices) is pinned");
             Assert.That(pinDrift, Is.EqualTo(0f), "pinned vertices do not move at all");
             Assert.That(deepest, Is.GreaterThan(0.85f * Length), "the flag swings down from its edge");
-            Assert.That(longest, Is.LessThan(1.15f * Length), "the tip stays within 15 % of its rest distance from the pin line");
-            // Nothing damps the pendulum swing but the material (no air), so in the last second
-            // it still swings; it swings below the pin line, about the plumb line.
-            Assert.That(tipHigh, Is.LessThan(PinY - 0.3f * Length), "it hangs below the pin line");
-            Assert.That(tipMeanX, Is.EqualTo(PinX).Within(0.3f * Length), "swinging about the plumb line");
-            // The stiffness-proportional damping leaves a resting XPBD sheet a few per cent long (see ClothDrapeTests).
-            Assert.That(restingStretch, Is.LessThan(0.10f), "hanging edges stretch less than 10 %");
-            Assert.That(worstStretch, Is.LessThan(0.25f), "and less than 25 % in the swing");
+            Assert.That(longest, Is.LessThan(1.05f * Length), "the tip stays within 5 % of its rest distance from the pin line");
+            // The file's linearDamping 1/s stands in for air drag (which, on 0.15 kg/m^2 of sheet
+            // at 1 m/s, is several times stronger), so by the last second the swing has died down
+            // to a sway below the pin line, about the plumb line.
+            Assert.That(tipHigh, Is.LessThan(PinY - 0.8f * Length), "it hangs below the pin line");
+            Assert.That(tipMeanX, Is.EqualTo(PinX).Within(0.25f * Length), "swaying about the plumb line");
+            // With the file's 1 ms damping time the XPBD sheet hangs 1.3 % long (5.6 % with the
+            // engine's 0.01 s default: see ClothDrapeTests).
+            Assert.That(restingStretch, Is.LessThan(0.03f), "hanging edges stretch less than 3 %");
+            Assert.That(worstStretch, Is.LessThan(0.06f), "and less than 6 % in the swing");
             Assert.That(worstExcess, Is.LessThan(0.1f * mass * g * 0.5f), "no kinetic energy from nowhere");
         }
 

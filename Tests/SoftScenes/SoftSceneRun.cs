@@ -16,13 +16,17 @@ namespace Fulcrum.Tests.SoftScenes
         public readonly SceneDocument Document;
         public readonly SceneInstance Scene;
         public readonly SoftBody Body;
+        /// <summary>Every soft body of the scene, in file order (<see cref="Body"/> is the first).</summary>
+        public readonly SoftBody[] All;
 
         SoftSceneRun(string path)
         {
             Document = SceneFile.Load(path);
             Scene = SceneBuilder.Build(Document);
             SoftBodyHandle[] made = SceneSoftBodyBuilder.Build(Scene);
-            Body = Scene.World.GetSoftBody(made[0]);
+            All = new SoftBody[made.Length];
+            for (int i = 0; i < made.Length; i++) All[i] = Scene.World.GetSoftBody(made[i]);
+            Body = All[0];
         }
 
         /// <summary>Loads Samples~/Scenes/<paramref name="name"/>.json, found above the test directory.</summary>

@@ -354,6 +354,9 @@ namespace Fulcrum.Scenes
                 else SoftMesh(s.Mesh, mesh);
                 SoftMaterial(s.Material, P(path, "material"));
                 Finite(s.Position, P(path, "position"));
+                Rotation(s.Rotation, P(path, "rotation"));
+                Finite(s.Velocity, P(path, "velocity"));
+                SoftSettings(s, path);
                 for (int i = 0; i < s.Pinned.Count; i++)
                 {
                     ScenePin pin = s.Pinned[i];
@@ -375,6 +378,21 @@ namespace Fulcrum.Scenes
                     Positive(pl.FlowRate, P(pp, "flowRate"));
                     Positive(pl.MaxStrain, P(pp, "maxStrain"));
                 }
+            }
+
+            // The solver and contact settings; each is optional (null: the engine's default).
+            void SoftSettings(SceneSoftBody s, string path)
+            {
+                if (s.Substeps is int substeps) IntInRange(substeps, 0, 1000, P(path, "substeps"));
+                if (s.Iterations is int iterations) IntInRange(iterations, 1, 1000, P(path, "iterations"));
+                if (s.DampingTime is float dampingTime) NonNegative(dampingTime, P(path, "dampingTime"));
+                if (s.LinearDamping is float linearDamping) NonNegative(linearDamping, P(path, "linearDamping"));
+                if (s.GravityScale is float gravityScale) Finite(gravityScale, P(path, "gravityScale"));
+                if (s.Friction is float friction) NonNegative(friction, P(path, "friction"));
+                if (s.CollisionRadius is float radius) NonNegative(radius, P(path, "collisionRadius"));
+                if (s.Layer is int layer) IntInRange(layer, 0, 31, P(path, "layer"));
+                if (s.CollidesWith is int[] layers)
+                    for (int i = 0; i < layers.Length; i++) IntInRange(layers[i], 0, 31, JsonPath.Index(P(path, "collidesWith"), i));
             }
 
             void SoftMesh(SceneSoftMesh m, string path)
@@ -524,6 +542,11 @@ namespace Fulcrum.Scenes
                 if (v >= min) return true;
                 Error(path, $"must be >= {min}, got {v}");
                 return false;
+            }
+
+            void IntInRange(int v, int lo, int hi, string path)
+            {
+                if (v < lo || v > hi) Error(path, $"must be in [{lo}, {hi}], got {v}");
             }
 
             void Axis(Vector3 v, string path)

@@ -147,6 +147,8 @@ namespace Fulcrum.Scenes
                 o.Add("material", mo.Value);
             }
             o.Add("position", s.Position);
+            if (!Same(s.Rotation, Quaternion.Identity)) o.Add("rotation", s.Rotation);
+            if (!Same(s.Velocity, Vector3.Zero)) o.Add("velocity", s.Velocity);
             if (s.Pinned.Count > 0)
                 o.Add("pinned", ListOf(s.Pinned, p =>
                 {
@@ -160,6 +162,18 @@ namespace Fulcrum.Scenes
                 o.Add("initialDeformation", JsonValue.Array(new List<JsonValue> { Vec(f.R0), Vec(f.R1), Vec(f.R2) }));
             }
             if (s.Probes.Count > 0) o.Add("probes", Points(s.Probes));
+            if (s.Substeps is int substeps) o.Add("substeps", substeps);
+            if (s.Iterations is int iterations) o.Add("iterations", iterations);
+            if (s.DampingTime is float dampingTime) o.Add("dampingTime", dampingTime);
+            if (s.LinearDamping is float linearDamping) o.Add("linearDamping", linearDamping);
+            if (s.GravityScale is float gravityScale) o.Add("gravityScale", gravityScale);
+            if (s.Friction is float friction) o.Add("friction", friction);
+            if (s.CollisionRadius is float radius) o.Add("collisionRadius", radius);
+            if (s.CollideWithShapes is bool shapes) o.Add("collideWithShapes", shapes);
+            if (s.CollideWithSoftBodies is bool softBodies) o.Add("collideWithSoftBodies", softBodies);
+            if (s.SelfCollision is bool self) o.Add("selfCollision", self);
+            if (s.Layer is int layer) o.Add("layer", layer);
+            if (s.CollidesWith is int[] layers) o.Add("collidesWith", Ints(layers));
             if (s.Plasticity is ScenePlasticity pl)
                 o.Add("plasticity", new Obj().Add("yieldStrain", pl.YieldStrain).Add("flowRate", pl.FlowRate).Add("maxStrain", pl.MaxStrain).Value);
             return o.Value;

@@ -74,6 +74,37 @@ namespace Fulcrum.Scenes
             return v != null && ReadInt(v, _d, out int i) ? i : fallback;
         }
 
+        public int? OptionalInt(string key)
+        {
+            JsonValue? v = Take(key);
+            return v != null && ReadInt(v, _d, out int i) ? i : (int?)null;
+        }
+
+        public bool? OptionalBool(string key)
+        {
+            JsonValue? v = Take(key);
+            if (v == null) return null;
+            if (v.Kind == JsonKind.Bool) return v.AsBool;
+            _d.Add(v.Path, $"expected true or false, got {Describe(v)}", v);
+            return null;
+        }
+
+        /// <summary>An array of integers of any length; null when absent or wrong.</summary>
+        public int[]? IntList(string key)
+        {
+            JsonValue? v = Take(key);
+            if (v == null) return null;
+            if (v.Kind != JsonKind.Array)
+            {
+                _d.Add(v.Path, $"expected an array of integers, got {Describe(v)}", v);
+                return null;
+            }
+            var r = new int[v.Items.Count];
+            bool ok = true;
+            for (int i = 0; i < r.Length; i++) ok &= ReadInt(v.Items[i], _d, out r[i]);
+            return ok ? r : null;
+        }
+
         public bool Bool(string key, bool fallback)
         {
             JsonValue? v = Take(key);

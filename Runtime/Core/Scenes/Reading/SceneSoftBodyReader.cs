@@ -15,10 +15,24 @@ namespace Fulcrum.Scenes
             if (r.Take("mesh", required: true) is JsonValue mesh) s.Mesh = ReadMesh(mesh, d);
             if (r.Take("material", required: true) is JsonValue material) s.Material = ReadMaterial(material, d);
             s.Position = r.Vector("position", s.Position);
+            s.Rotation = r.Rotation("rotation", s.Rotation);
+            s.Velocity = r.Vector("velocity", s.Velocity);
             foreach (JsonValue p in r.Array("pinned"))
                 if (ReadPin(p, d) is ScenePin pin) s.Pinned.Add(pin);
             if (r.Take("initialDeformation") is JsonValue f && ReadMatrix(f, d, out Mat3 m)) s.InitialDeformation = m;
             if (r.Vectors("probes") is List<Vector3> probes) s.Probes.AddRange(probes);
+            s.Substeps = r.OptionalInt("substeps");
+            s.Iterations = r.OptionalInt("iterations");
+            s.DampingTime = r.OptionalFloat("dampingTime");
+            s.LinearDamping = r.OptionalFloat("linearDamping");
+            s.GravityScale = r.OptionalFloat("gravityScale");
+            s.Friction = r.OptionalFloat("friction");
+            s.CollisionRadius = r.OptionalFloat("collisionRadius");
+            s.CollideWithShapes = r.OptionalBool("collideWithShapes");
+            s.CollideWithSoftBodies = r.OptionalBool("collideWithSoftBodies");
+            s.SelfCollision = r.OptionalBool("selfCollision");
+            s.Layer = r.OptionalInt("layer");
+            s.CollidesWith = r.IntList("collidesWith");
             if (r.Take("plasticity") is JsonValue plasticity) s.Plasticity = ReadPlasticity(plasticity, d);
             r.Finish();
             return s;
