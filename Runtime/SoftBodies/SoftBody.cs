@@ -32,6 +32,7 @@ namespace Fulcrum.SoftBodies
         internal readonly TetElement[] Tets;
         internal readonly int[] TetColors;
         internal readonly Vector2[] TetLambda;
+        internal readonly TetGradients[] TetGrad;
         internal readonly int[] TetOfMeshTet;
         internal readonly float[] PlasticStrain;
         internal readonly TriangleElement[] Tris;
@@ -105,6 +106,7 @@ namespace Fulcrum.SoftBodies
             Tets = new TetElement[order.Length];
             TetOfMeshTet = new int[order.Length];
             TetLambda = new Vector2[order.Length];
+            TetGrad = new TetGradients[order.Length];
             PlasticStrain = new float[order.Length];
             for (int k = 0; k < order.Length; k++)
             {

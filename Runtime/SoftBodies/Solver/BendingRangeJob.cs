@@ -12,7 +12,7 @@ namespace Fulcrum.SoftBodies
         public override void Execute(int start, int end)
         {
             if (Damping) RayleighDamping.Bends(_body.Bends, _body.X, _body.V, _body.W, start, end, H, DampingTime);
-            else XpbdBendingSolver.Solve(_body.Bends, _body.BendLambda, _body.X, _body.XPrev, _body.W, _body.FreeW, start, end, H);
+            else XpbdBendingSolver.Solve(_body.Bends, _body.BendLambda, _body.X, _body.XPrev, _body.W, _body.M, _body.FreeW, start, end, H);
         }
     }
 }

@@ -12,7 +12,7 @@ namespace Fulcrum.SoftBodies
         public override void Execute(int start, int end)
         {
             if (Damping) RayleighDamping.Membranes(_body.MembraneModel, _body.Thickness, _body.Tris, _body.X, _body.V, _body.W, start, end, H, DampingTime);
-            else XpbdMembraneSolver.Solve(_body.MembraneModel, _body.Thickness, _body.Tris, _body.TriLambda, _body.X, _body.XPrev, _body.W, _body.FreeW, start, end, H);
+            else XpbdMembraneSolver.Solve(_body.MembraneModel, _body.Thickness, _body.Tris, _body.TriLambda, _body.X, _body.XPrev, _body.W, _body.M, _body.FreeW, start, end, H);
         }
     }
 }

@@ -25,34 +25,36 @@ namespace Fulcrum.SoftBodies
     /// </summary>
     internal static class RayleighDamping
     {
-        /// <summary>Damps tets [start, end) (one colour: no shared vertex).</summary>
-        public static void Tets<TModel>(in TModel model, TetElement[] tets, Vector3[] x, Vector3[] v, float[] w,
-            int start, int end, float h, float dampingTime)
-            where TModel : struct, IHyperelasticModel
+        /// <summary>
+        /// Damps tets [start, end) (one colour: no shared vertex) along the gradients the last
+        /// position iteration kept (<see cref="TetGradients"/>, taken just before that
+        /// iteration's correction rather than at the final x). Any direction keeps the update
+        /// dissipative and momentum-free; the torque-free projection about the final x keeps the
+        /// angular momentum exact.
+        /// </summary>
+        public static void Tets(float deviatoricStiffness, float hydrostaticStiffness, TetElement[] tets, TetGradients[] grads,
+            Vector3[] x, Vector3[] v, float[] w, float[] m, float[] free, int start, int end, float h, float dampingTime)
         {
             // 1 / (h b) per unit rest volume.
-            float invD = 1f / (h * dampingTime * model.DeviatoricStiffness), invH = 1f / (h * dampingTime * model.HydrostaticStiffness);
+            float invD = 1f / (h * dampingTime * deviatoricStiffness), invH = 1f / (h * dampingTime * hydrostaticStiffness);
             for (int e = start; e < end; e++)
             {
                 ref TetElement t = ref tets[e];
                 float w0 = w[t.A], w1 = w[t.B], w2 = w[t.C], w3 = w[t.D];
                 if (w0 + w1 + w2 + w3 == 0f) continue;
-                Mat3 f = DeformationGradient.Of(x[t.A], x[t.B], x[t.C], x[t.D], t.RestInverse);
-                model.Constraints(f, out _, out Mat3 dD, out _, out Mat3 dH);
-                DeformationGradient.VertexGradients(dD, t.RestInverse, out Vector3 d0, out Vector3 d1, out Vector3 d2, out Vector3 d3);
-                DeformationGradient.VertexGradients(dH, t.RestInverse, out Vector3 h0, out Vector3 h1, out Vector3 h2, out Vector3 h3);
+                ref TetGradients g = ref grads[e];
                 Vector3 v0 = v[t.A], v1 = v[t.B], v2 = v[t.C], v3 = v[t.D];
-                float sD = Vector3.Dot(d0, v0) + Vector3.Dot(d1, v1) + Vector3.Dot(d2, v2) + Vector3.Dot(d3, v3);
-                float sH = Vector3.Dot(h0, v0) + Vector3.Dot(h1, v1) + Vector3.Dot(h2, v2) + Vector3.Dot(h3, v3);
-                float kDD = w0 * d0.LengthSquared() + w1 * d1.LengthSquared() + w2 * d2.LengthSquared() + w3 * d3.LengthSquared();
-                float kHH = w0 * h0.LengthSquared() + w1 * h1.LengthSquared() + w2 * h2.LengthSquared() + w3 * h3.LengthSquared();
-                float kDH = w0 * Vector3.Dot(d0, h0) + w1 * Vector3.Dot(d1, h1) + w2 * Vector3.Dot(d2, h2) + w3 * Vector3.Dot(d3, h3);
+                float sD = Vector3.Dot(g.D0, v0) + Vector3.Dot(g.D1, v1) + Vector3.Dot(g.D2, v2) + Vector3.Dot(g.D3, v3);
+                float sH = Vector3.Dot(g.H0, v0) + Vector3.Dot(g.H1, v1) + Vector3.Dot(g.H2, v2) + Vector3.Dot(g.H3, v3);
                 float invV = 1f / t.RestVolume;
-                if (!XpbdConstraintPair.Solve(kDD + invD * invV, kDH, kHH + invH * invV, sD, sH, out float mD, out float mH)) continue;
-                v[t.A] = v0 - w0 * (mD * d0 + mH * h0);
-                v[t.B] = v1 - w1 * (mD * d1 + mH * h1);
-                v[t.C] = v2 - w2 * (mD * d2 + mH * h2);
-                v[t.D] = v3 - w3 * (mD * d3 + mH * h3);
+                if (!XpbdConstraintPair.Solve(g.KDD + invD * invV, g.KDH, g.KHH + invH * invV, sD, sH, out float mD, out float mH)) continue;
+                Vector3 p0 = -(mD * g.D0 + mH * g.H0), p1 = -(mD * g.D1 + mH * g.H1), p2 = -(mD * g.D2 + mH * g.H2), p3 = -(mD * g.D3 + mH * g.H3);
+                if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f && free[t.D] > 0f)
+                    TorqueFree.Project(x[t.A], x[t.B], x[t.C], x[t.D], m[t.A], m[t.B], m[t.C], m[t.D], ref p0, ref p1, ref p2, ref p3);
+                v[t.A] = v0 + w0 * p0;
+                v[t.B] = v1 + w1 * p1;
+                v[t.C] = v2 + w2 * p2;
+                v[t.D] = v3 + w3 * p3;
             }
         }
 

@@ -19,8 +19,8 @@ namespace Fulcrum.SoftBodies
 
         public override void Execute(int start, int end)
         {
-            if (Damping) RayleighDamping.Tets(_model, _body.Tets, _body.X, _body.V, _body.W, start, end, H, DampingTime);
-            else XpbdTetSolver.Solve(_model, _body.Tets, _body.TetLambda, _body.X, _body.XPrev, _body.W, _body.FreeW, start, end, H);
+            if (Damping) RayleighDamping.Tets(_model.DeviatoricStiffness, _model.HydrostaticStiffness, _body.Tets, _body.TetGrad, _body.X, _body.V, _body.W, _body.M, _body.FreeW, start, end, H, DampingTime);
+            else XpbdTetSolver.Solve(_model, _body.Tets, _body.TetLambda, DampingTime > 0f ? _body.TetGrad : null, _body.X, _body.XPrev, _body.W, _body.M, _body.FreeW, start, end, H);
         }
     }
 }

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.SoftBodies
 {
@@ -15,11 +16,11 @@ namespace Fulcrum.SoftBodies
     /// </summary>
     internal static class TorqueFree
     {
-        /// <summary>Adjusts the impulses g_k (= m_k dx_k) of a 4-vertex element; all inverse masses must be positive.</summary>
-        public static void Project(Vector3 p0, Vector3 p1, Vector3 p2, Vector3 p3, float w0, float w1, float w2, float w3,
+        /// <summary>Adjusts the impulses g_k (= m_k dx_k) of a 4-vertex element of (finite) masses m_k.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Project(Vector3 p0, Vector3 p1, Vector3 p2, Vector3 p3, float m0, float m1, float m2, float m3,
             ref Vector3 g0, ref Vector3 g1, ref Vector3 g2, ref Vector3 g3)
         {
-            float m0 = 1f / w0, m1 = 1f / w1, m2 = 1f / w2, m3 = 1f / w3;
             Vector3 c = (m0 * p0 + m1 * p1 + m2 * p2 + m3 * p3) / (m0 + m1 + m2 + m3);
             Vector3 r0 = p0 - c, r1 = p1 - c, r2 = p2 - c, r3 = p3 - c;
             Vector3 torque = Vector3.Cross(r0, g0) + Vector3.Cross(r1, g1) + Vector3.Cross(r2, g2) + Vector3.Cross(r3, g3);
@@ -36,10 +37,10 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>The same for a triangle (3 vertices).</summary>
-        public static void Project(Vector3 p0, Vector3 p1, Vector3 p2, float w0, float w1, float w2,
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Project(Vector3 p0, Vector3 p1, Vector3 p2, float m0, float m1, float m2,
             ref Vector3 g0, ref Vector3 g1, ref Vector3 g2)
         {
-            float m0 = 1f / w0, m1 = 1f / w1, m2 = 1f / w2;
             Vector3 c = (m0 * p0 + m1 * p1 + m2 * p2) / (m0 + m1 + m2);
             Vector3 r0 = p0 - c, r1 = p1 - c, r2 = p2 - c;
             Vector3 torque = Vector3.Cross(r0, g0) + Vector3.Cross(r1, g1) + Vector3.Cross(r2, g2);
@@ -56,6 +57,7 @@ namespace Fulcrum.SoftBodies
         // (diag = (Sxx, Syy, Szz), off = (Sxy, Syz, Szx)) by the adjugate of the symmetric I.
         // I is singular only when the points are collinear; the correction is then skipped
         // (such an element has collapsed and its gradient is degenerate anyway).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static bool Solve(Vector3 diag, Vector3 off, Vector3 torque, out Vector3 omega)
         {
             float a = diag.Y + diag.Z, b = diag.X + diag.Z, c = diag.X + diag.Y;

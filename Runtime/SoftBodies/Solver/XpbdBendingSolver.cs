@@ -10,7 +10,7 @@ namespace Fulcrum.SoftBodies
     internal static class XpbdBendingSolver
     {
         /// <summary>One undamped Gauss-Seidel pass over hinges [start, end), torque-free like the tets' (<see cref="TorqueFree"/>).</summary>
-        public static void Solve(BendElement[] bends, float[] lambdas, Vector3[] x, Vector3[] xPrev, float[] w, float[] free,
+        public static void Solve(BendElement[] bends, float[] lambdas, Vector3[] x, Vector3[] xPrev, float[] w, float[] m, float[] free,
             int start, int end, float h)
         {
             float invH2 = 1f / (h * h);
@@ -34,7 +34,7 @@ namespace Fulcrum.SoftBodies
                 lambdas[e] += dl;
                 ga *= dl; gb *= dl; gc *= dl; gd *= dl;
                 if (free[b.A] > 0f && free[b.B] > 0f && free[b.C] > 0f && free[b.D] > 0f)
-                    TorqueFree.Project(xPrev[b.A], xPrev[b.B], xPrev[b.C], xPrev[b.D], wa, wb, wc, wd, ref ga, ref gb, ref gc, ref gd);
+                    TorqueFree.Project(xPrev[b.A], xPrev[b.B], xPrev[b.C], xPrev[b.D], m[b.A], m[b.B], m[b.C], m[b.D], ref ga, ref gb, ref gc, ref gd);
                 x[b.A] = xa + wa * ga;
                 x[b.B] = xb + wb * gb;
                 x[b.C] = xc + wc * gc;

@@ -11,7 +11,7 @@ namespace Fulcrum.SoftBodies
     {
         /// <summary>One undamped Gauss-Seidel pass over triangles [start, end), torque-free like the tets' (<see cref="TorqueFree"/>).</summary>
         public static void Solve(in MembraneEnergy model, float thickness, TriangleElement[] tris, Vector2[] lambdas, Vector3[] x, Vector3[] xPrev,
-            float[] w, float[] free, int start, int end, float h)
+            float[] w, float[] m, float[] free, int start, int end, float h)
         {
             float invH2 = 1f / (h * h);
             float alphaDev = invH2 / (model.Mu * thickness);
@@ -42,7 +42,7 @@ namespace Fulcrum.SoftBodies
                 lambda.Y += dlH;
                 Vector3 q0 = dlD * d0 + dlH * g0, q1 = dlD * d1 + dlH * g1, q2 = dlD * d2 + dlH * g2;
                 if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f)
-                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], w0, w1, w2, ref q0, ref q1, ref q2);
+                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], m[t.A], m[t.B], m[t.C], ref q0, ref q1, ref q2);
                 x[t.A] = x0 + w0 * q0;
                 x[t.B] = x1 + w1 * q1;
                 x[t.C] = x2 + w2 * q2;

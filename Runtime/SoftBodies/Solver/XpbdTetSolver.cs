@@ -16,9 +16,10 @@ namespace Fulcrum.SoftBodies
         /// One Gauss-Seidel pass over tets [start, end). Undamped: damping is a velocity pass
         /// after the substep (<see cref="RayleighDamping"/>). Each correction is made free of
         /// net angular impulse (<see cref="TorqueFree"/>) unless the tet has a pinned or attached vertex.
+        /// <paramref name="keep"/>, when not null, receives each tet's gradients for the damping pass.
         /// </summary>
-        public static void Solve<TModel>(in TModel model, TetElement[] tets, Vector2[] lambdas, Vector3[] x, Vector3[] xPrev,
-            float[] w, float[] free, int start, int end, float h)
+        public static void Solve<TModel>(in TModel model, TetElement[] tets, Vector2[] lambdas, TetGradients[]? keep, Vector3[] x, Vector3[] xPrev,
+            float[] w, float[] m, float[] free, int start, int end, float h)
             where TModel : struct, IHyperelasticModel
         {
             float invH2 = 1f / (h * h);
@@ -39,6 +40,10 @@ namespace Fulcrum.SoftBodies
                 float kDD = w0 * d0.LengthSquared() + w1 * d1.LengthSquared() + w2 * d2.LengthSquared() + w3 * d3.LengthSquared();
                 float kHH = w0 * h0.LengthSquared() + w1 * h1.LengthSquared() + w2 * h2.LengthSquared() + w3 * h3.LengthSquared();
                 float kDH = w0 * Vector3.Dot(d0, h0) + w1 * Vector3.Dot(d1, h1) + w2 * Vector3.Dot(d2, h2) + w3 * Vector3.Dot(d3, h3);
+                if (keep != null)
+                {
+                    keep[e] = new TetGradients { D0 = d0, D1 = d1, D2 = d2, D3 = d3, H0 = h0, H1 = h1, H2 = h2, H3 = h3, KDD = kDD, KDH = kDH, KHH = kHH };
+                }
                 float invV = 1f / t.RestVolume;
                 float aD = alphaDev * invV, aH = alphaVol * invV;
                 ref Vector2 lambda = ref lambdas[e];
@@ -49,7 +54,7 @@ namespace Fulcrum.SoftBodies
                 lambda.Y += dlH;
                 Vector3 g0 = dlD * d0 + dlH * h0, g1 = dlD * d1 + dlH * h1, g2 = dlD * d2 + dlH * h2, g3 = dlD * d3 + dlH * h3;
                 if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f && free[t.D] > 0f)
-                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], xPrev[t.D], w0, w1, w2, w3, ref g0, ref g1, ref g2, ref g3);
+                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], xPrev[t.D], m[t.A], m[t.B], m[t.C], m[t.D], ref g0, ref g1, ref g2, ref g3);
                 x[t.A] = x0 + w0 * g0;
                 x[t.B] = x1 + w1 * g1;
                 x[t.C] = x2 + w2 * g2;
