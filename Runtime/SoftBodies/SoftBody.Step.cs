@@ -37,15 +37,21 @@ namespace Fulcrum.SoftBodies
             Array.Clear(TetLambda, 0, TetLambda.Length);
             Array.Clear(TriLambda, 0, TriLambda.Length);
             Array.Clear(BendLambda, 0, BendLambda.Length);
+            if (CollideWithShapes) Contacts.BeginSubstep(X.Length);
             for (int iteration = 0; iteration < Iterations; iteration++)
             {
                 // Contacts before the elastic pass: projected after it, they keep re-straining
                 // the elements that touch the ground, and a stiff body settles with that strain
                 // locked in (a cube at E = 1e9 Pa kept 1.2e4 J; this order leaves 185 J).
-                if (CollideWithShapes) Contacts.Solve(World, this, h, coupling);
+                if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
                 RunElements(h, damping: false, pool);
                 if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
             }
+            // Friction again after the elastic pass, on the substep's whole slip, within what is
+            // left of the cone: measured only up to the contact pass it missed the slip the
+            // elastic pass adds, and a jelly crept 4 cm/s down a 30 degree slope with mu = 0.8.
+            // (Not the normal constraint: projected after the elastic pass it locks strain in.)
+            if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: false);
             SelfContacts?.Solve(X, W);
             float invH = 1f / h;
             for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;

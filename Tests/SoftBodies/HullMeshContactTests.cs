@@ -140,13 +140,14 @@ namespace Fulcrum.Tests.SoftBodies
             return travelled;
         }
 
-        [Test, Ignore("Known: creeps about 4 cm/s on hull and box slopes alike (per-substep friction forgets the slip the elastic pass adds after the contact pass); an anchored-friction fix held it to 1 mm but put energy into a bouncing block")]
+        [Test]
         public void Jelly_on_a_30deg_hull_slope_with_mu_0_8_stays_put()
         {
             float travelled = SlideOnSlope(0.8f, true, out _);
             float onBox = SlideOnSlope(0.8f, false, out _);
             TestContext.Out.WriteLine($"travelled {travelled:F4} m in 0.5 s (on a box slope {onBox:F4} m)");
-            Assert.That(travelled, Is.EqualTo(0f).Within(0.005f), "a little shear, no creep");
+            // 1.0 mm measured (it crept 2 cm before friction also ran after the elastic pass).
+            Assert.That(travelled, Is.EqualTo(0f).Within(0.0025f), "a little shear, no creep");
             Assert.That(onBox, Is.EqualTo(travelled).Within(1e-4f), "the hull box behaves as the box");
         }
 

@@ -105,8 +105,12 @@ namespace Fulcrum.SoftBodies
             _pairs[_count++] = pair;
         }
 
-        /// <summary>One pass over the pairs (zero compliance; the mesh is static, so the vertex takes the whole correction).</summary>
-        public void Solve(SoftBody body)
+        /// <summary>
+        /// One pass over the pairs (zero compliance; the mesh is static, so the vertex takes the
+        /// whole correction), then friction as in <see cref="ShapeContactSolver.Solve"/>, against
+        /// the substep's normal corrections <paramref name="pushed"/> less <paramref name="held"/>.
+        /// </summary>
+        public void Solve(SoftBody body, float[] pushed, float[] held)
         {
             Vector3[] x = body.X, xPrev = body.XPrev;
             float[] w = body.W;
@@ -139,13 +143,17 @@ namespace Fulcrum.SoftBodies
                 }
                 float push = radius - distance;
                 x[i] += push * n;
+                pushed[i] += push / w[i];
 
                 Vector3 relative = x[i] - xPrev[i];
                 Vector3 tangent = relative - Vector3.Dot(relative, n) * n;
                 float slip = tangent.Length();
                 if (slip < 1e-9f) continue;
                 // Static friction holds the whole slip; beyond the cone the correction is capped.
-                x[i] -= tangent * MathF.Min(1f, pair.Friction * push / slip);
+                float cone = MathF.Max(0f, pair.Friction * pushed[i] - held[i]) * w[i];
+                float take = MathF.Min(slip, cone);
+                held[i] += take / w[i];
+                x[i] -= tangent * (take / slip);
             }
         }
     }

@@ -11,7 +11,8 @@ namespace Fulcrum.SoftBodies
     /// zero-compliance XPBD constraint shared with the shape's body through its generalised
     /// inverse mass, then Coulomb friction removes the relative tangential displacement of the
     /// substep up to mu times the normal correction (Mueller et al. 2020, "Detailed Rigid Body
-    /// Simulation with Extended Position Based Dynamics", section 3.5).
+    /// Simulation with Extended Position Based Dynamics", section 3.5). Friction runs once more
+    /// after the elastic pass, on the substep's whole slip, within what is left of the cone.
     /// Every shape kind takes part: spheres, boxes, capsules, planes and convex hulls through
     /// <see cref="ShapeDistance"/>; static triangle meshes one triangle at a time through
     /// <see cref="MeshVertexContacts"/>. A body with several shapes (a compound) meets each of
@@ -22,6 +23,10 @@ namespace Fulcrum.SoftBodies
         int[] _shapes = Array.Empty<int>();
         int _count;
         readonly MeshVertexContacts _meshes = new MeshVertexContacts();
+        // Per vertex over the current substep: normal corrections (Lagrange multipliers, kg m)
+        // and the friction spent against them, so the cone bounds the whole substep.
+        float[] _pushed = Array.Empty<float>();
+        float[] _held = Array.Empty<float>();
 
         /// <summary>Vertex-triangle pairs gathered against triangle meshes for this step.</summary>
         public int MeshPairCount => _meshes.Count;
@@ -73,8 +78,25 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        /// <summary>One pass over the gathered shapes for every free vertex, in a fixed order.</summary>
-        public void Solve(World world, SoftBody body, float h, RigidCoupling coupling)
+        /// <summary>Starts a substep: no vertex has been pushed or held yet.</summary>
+        public void BeginSubstep(int vertexCount)
+        {
+            if (_pushed.Length < vertexCount)
+            {
+                _pushed = new float[vertexCount];
+                _held = new float[vertexCount];
+            }
+            Array.Clear(_pushed, 0, vertexCount);
+            Array.Clear(_held, 0, vertexCount);
+        }
+
+        /// <summary>
+        /// One pass over the gathered shapes for every free vertex, in a fixed order: the normal
+        /// constraint when <paramref name="normal"/> (before the elastic pass), then friction on
+        /// the whole tangential displacement of the substep so far, bounded by mu times the
+        /// normal corrections the vertex had in the substep less the friction already spent.
+        /// </summary>
+        public void Solve(World world, SoftBody body, float h, RigidCoupling coupling, bool normal)
         {
             ShapeStorage s = world.Shapes;
             Vector3[] x = body.X, xPrev = body.XPrev;
@@ -94,9 +116,13 @@ namespace Fulcrum.SoftBodies
                     if (!ShapeDistance.Query(geometry, pose, x[i], radius, out float distance, out Vector3 n)) continue;
                     Vector3 contact = x[i] - n * distance;
                     float wb = coupling.InverseMassAt(owner, contact, n);
-                    float dl = (radius - distance) / (wi + wb);
-                    x[i] += wi * dl * n;
-                    coupling.Push(owner, contact, -dl * n, h);
+                    if (normal)
+                    {
+                        float dl = (radius - distance) / (wi + wb);
+                        x[i] += wi * dl * n;
+                        coupling.Push(owner, contact, -dl * n, h);
+                        _pushed[i] += dl;
+                    }
 
                     Vector3 relative = (x[i] - xPrev[i]) - coupling.PointVelocity(owner, contact) * h;
                     Vector3 tangent = relative - Vector3.Dot(relative, n) * n;
@@ -105,12 +131,16 @@ namespace Fulcrum.SoftBodies
                     Vector3 t = tangent / slip;
                     float dlt = slip / (wi + coupling.InverseMassAt(owner, contact, t));
                     // Static friction holds the whole slip; beyond the cone the correction is capped.
-                    if (dlt > mu * dl) dlt = mu * dl;
+                    float cone = mu * _pushed[i] - _held[i];
+                    if (dlt > cone) dlt = MathF.Max(0f, cone);
+                    _held[i] += dlt;
                     x[i] -= wi * dlt * t;
                     coupling.Push(owner, contact, dlt * t, h);
                 }
             }
-            if (_meshes.Count > 0) _meshes.Solve(body);
+            // Meshes only before the elastic pass: a second friction pass there let a jelly falling
+            // at 4 m/s onto a mesh floor end 2.5 mm deep (the bound is 2 mm).
+            if (normal && _meshes.Count > 0) _meshes.Solve(body, _pushed, _held);
         }
     }
 }
