@@ -59,12 +59,15 @@ namespace Fulcrum.Collision
         {
             int written = 0;
             int limit = outPts.Length;
+            // Each vertex's distance is computed once and handed on to the next edge.
+            float d0 = Vector3.Dot(normal, pts[0]) - offset;
+            float dn = d0;
             for (int k = 0; k < count; k++)
             {
                 int next = k + 1 == count ? 0 : k + 1;
                 Vector3 cur = pts[k], nxt = pts[next];
-                float dc = Vector3.Dot(normal, cur) - offset;
-                float dn = Vector3.Dot(normal, nxt) - offset;
+                float dc = dn;
+                dn = next == 0 ? d0 : Vector3.Dot(normal, nxt) - offset;
                 bool curIn = dc <= tolerance, nextIn = dn <= tolerance;
                 if (curIn && written < limit)
                 {
