@@ -117,30 +117,30 @@ namespace Fulcrum.Collision
             Vector3 u = Axis(rI, (j + 1) % 3) * Comp(hI, (j + 1) % 3);
             Vector3 v = Axis(rI, (j + 2) % 3) * Comp(hI, (j + 2) % 3);
 
-            Span<Vector3> pts = stackalloc Vector3[8];
-            Span<uint> keys = stackalloc uint[8];
-            Span<uint> segs = stackalloc uint[8];
-            Span<Vector3> sp = stackalloc Vector3[8];
-            Span<uint> sk = stackalloc uint[8];
-            Span<uint> ss = stackalloc uint[8];
+            // The buffer's clipping scratch: nothing to zero per call (stackalloc would).
+            ClipScratch scratch = output.Clip;
+            Vector3[] pts = scratch.Points;
+            uint[] keys = scratch.Keys;
             pts[0] = fc + u + v;
             pts[1] = fc - u + v;
             pts[2] = fc - u - v;
             pts[3] = fc + u - v;
+            uint[] segs = scratch.Segments;
             for (uint k = 0; k < 4; k++) { keys[(int)k] = k; segs[(int)k] = k; }
 
             int a1 = (axisR + 1) % 3, a2 = (axisR + 2) % 3;
             Vector3 r1 = Axis(rR, a1), r2 = Axis(rR, a2);
             float o1 = Vector3.Dot(r1, cR), o2 = Vector3.Dot(r2, cR);
             float e1 = Comp(hR, a1), e2 = Comp(hR, a2);
-            Span<Vector3> planeN = stackalloc Vector3[4];
-            Span<float> planeD = stackalloc float[4];
+            Vector3[] planeN = scratch.PlaneNormals;
+            float[] planeD = scratch.PlaneOffsets;
             planeN[0] = r1; planeD[0] = o1 + e1;
             planeN[1] = -r1; planeD[1] = -o1 + e1;
             planeN[2] = r2; planeD[2] = o2 + e2;
             planeN[3] = -r2; planeD[3] = -o2 + e2;
             float clipTolerance = 0.001f + 0.002f * MathF.Max(e1, e2);
-            int count = PolygonClipper.Clip(pts, keys, segs, 4, planeN, planeD, sp, sk, ss, clipTolerance);
+            int count = PolygonClipper.Clip(pts, keys, segs, 4, planeN, planeD,
+                scratch.OtherPoints, scratch.OtherKeys, scratch.OtherSegments, clipTolerance);
 
             uint refFeature = (uint)((referenceIsB ? 8 : 0) | (axisR * 2 + (sign > 0 ? 0 : 1)));
             uint incFeature = (uint)(j * 2 + (incSign > 0 ? 0 : 1));

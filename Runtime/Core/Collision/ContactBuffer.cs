@@ -32,6 +32,9 @@ namespace Fulcrum.Collision
             if (withScratch) _scratch = new ContactBuffer(false);
         }
 
+        /// <summary>Face clipping scratch for box pairs (reused: per-call stack buffers cost their zeroing).</summary>
+        public readonly ClipScratch Clip = new ClipScratch();
+
         /// <summary>The largest separation a point may have and still be kept, metres.</summary>
         public float Speculative;
 

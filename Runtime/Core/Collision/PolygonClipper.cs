@@ -30,14 +30,25 @@ namespace Fulcrum.Collision
             ReadOnlySpan<Vector3> planeNormals, ReadOnlySpan<float> planeOffsets,
             Span<Vector3> scratchPoints, Span<uint> scratchKeys, Span<uint> scratchSegments, float tolerance = 0)
         {
+            // Ping-pong between the two buffers; one copy at the end if the result landed in
+            // the scratch ones (an odd number of planes).
+            Span<Vector3> inPoints = points, outPoints = scratchPoints;
+            Span<uint> inKeys = keys, outKeys = scratchKeys, inSegments = segments, outSegments = scratchSegments;
+            bool swapped = false;
             for (int p = 0; p < planeNormals.Length && count > 0; p++)
             {
-                int n = ClipOne(points, keys, segments, count, planeNormals[p], planeOffsets[p], (uint)p, tolerance,
-                    scratchPoints, scratchKeys, scratchSegments);
-                scratchPoints.Slice(0, n).CopyTo(points);
-                scratchKeys.Slice(0, n).CopyTo(keys);
-                scratchSegments.Slice(0, n).CopyTo(segments);
-                count = n;
+                count = ClipOne(inPoints, inKeys, inSegments, count, planeNormals[p], planeOffsets[p], (uint)p, tolerance,
+                    outPoints, outKeys, outSegments);
+                Span<Vector3> tp = inPoints; inPoints = outPoints; outPoints = tp;
+                Span<uint> tk = inKeys; inKeys = outKeys; outKeys = tk;
+                Span<uint> ts = inSegments; inSegments = outSegments; outSegments = ts;
+                swapped = !swapped;
+            }
+            if (swapped && count > 0)
+            {
+                inPoints.Slice(0, count).CopyTo(points);
+                inKeys.Slice(0, count).CopyTo(keys);
+                inSegments.Slice(0, count).CopyTo(segments);
             }
             return count;
         }
@@ -48,12 +59,15 @@ namespace Fulcrum.Collision
         {
             int written = 0;
             int limit = outPts.Length;
+            // Each vertex's distance is computed once and handed on to the next edge.
+            float d0 = Vector3.Dot(normal, pts[0]) - offset;
+            float dn = d0;
             for (int k = 0; k < count; k++)
             {
                 int next = k + 1 == count ? 0 : k + 1;
                 Vector3 cur = pts[k], nxt = pts[next];
-                float dc = Vector3.Dot(normal, cur) - offset;
-                float dn = Vector3.Dot(normal, nxt) - offset;
+                float dc = dn;
+                dn = next == 0 ? d0 : Vector3.Dot(normal, nxt) - offset;
                 bool curIn = dc <= tolerance, nextIn = dn <= tolerance;
                 if (curIn && written < limit)
                 {

@@ -450,8 +450,24 @@ namespace Fulcrum
         {
             ContactSet set = Contacts;
             ContactManifold[] pool = ContactGraph.Manifolds;
+            // Only the solver's outputs flow back: the geometry in the pool is what the set
+            // was copied from, so copying whole manifolds would move ~330 bytes each for ~90.
             for (int k = 0; k < set.ManifoldCount; k++)
-                pool[set.Source[k]] = set.Manifolds[k];
+            {
+                ref ContactManifold from = ref set.Manifolds[k];
+                ref ContactManifold to = ref pool[set.Source[k]];
+                to.RollingImpulse = from.RollingImpulse;
+                for (int i = 0; i < from.PointCount; i++)
+                {
+                    ref ContactPoint a = ref ContactManifold.Point(ref from, i);
+                    ref ContactPoint b = ref ContactManifold.Point(ref to, i);
+                    b.NormalImpulse = a.NormalImpulse;
+                    b.AppliedImpulse = a.AppliedImpulse;
+                    b.TangentImpulse1 = a.TangentImpulse1;
+                    b.TangentImpulse2 = a.TangentImpulse2;
+                    b.RelativeNormalVelocity = a.RelativeNormalVelocity;
+                }
+            }
         }
     }
 }
