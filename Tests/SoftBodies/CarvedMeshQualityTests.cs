@@ -56,34 +56,35 @@ namespace Fulcrum.Tests.SoftBodies
 
         // The grid itself has a mass ratio of 24: a box corner in one Kuhn tet holds 1/24 of a cell,
         // an inner vertex a whole cell. Before the peel and smoothing a carved ball reached
-        // 82 (8 cells) to 250 (10 cells) with worst quality 0.09.
-        [TestCase(6, 60f)]
-        [TestCase(8, 30f)]
-        [TestCase(10, 30f)]
-        [TestCase(12, 30f)]
-        public void Sphere_has_no_slivers_and_even_vertex_masses(int cells, float massRatioCeiling)
+        // 82 (8 cells) to 250 (10 cells) with worst quality 0.09. A coarse ball loses volume
+        // because its surface is a polyhedron inscribed in the sphere.
+        [TestCase(6, 0.09f)]
+        [TestCase(8, 0.05f)]
+        [TestCase(10, 0.04f)]
+        [TestCase(12, 0.04f)]
+        public void Sphere_has_no_slivers_and_even_vertex_masses(int cells, float volumeTolerance)
         {
             SoftMesh ball = SoftMesh.Sphere(0.2f, cells);
             float exact = 4f / 3f * MathF.PI * 0.008f;
             float quality = WorstQuality(ball), ratio = MassRatio(ball), volume = Volume(ball);
             TestContext.Out.WriteLine($"sphere {cells} cells: {ball.TetrahedronCount} tets, worst quality {quality:F3}, vertex mass max/min {ratio:F1}, volume {volume / exact:P2} of the ball");
             Assert.That(quality, Is.GreaterThan(0.4f));
-            Assert.That(ratio, Is.LessThan(massRatioCeiling));
-            Assert.That(volume, Is.EqualTo(exact).Within((cells == 6 ? 0.06f : 0.04f) * exact));
+            Assert.That(ratio, Is.LessThan(50f));
+            Assert.That(volume, Is.EqualTo(exact).Within(volumeTolerance * exact));
         }
 
-        [TestCase(6, 60f)]
-        [TestCase(8, 30f)]
-        [TestCase(10, 30f)]
-        public void Capsule_has_no_slivers_and_even_vertex_masses(int cells, float massRatioCeiling)
+        [TestCase(6, 0.06f)]
+        [TestCase(8, 0.04f)]
+        [TestCase(10, 0.04f)]
+        public void Capsule_has_no_slivers_and_even_vertex_masses(int cells, float volumeTolerance)
         {
             SoftMesh capsule = SoftMesh.Capsule(0.2f, 0.3f, cells);
             float exact = MathF.PI * 0.04f * 0.6f + 4f / 3f * MathF.PI * 0.008f;
             float quality = WorstQuality(capsule), ratio = MassRatio(capsule), volume = Volume(capsule);
             TestContext.Out.WriteLine($"capsule {cells} cells: {capsule.TetrahedronCount} tets, worst quality {quality:F3}, vertex mass max/min {ratio:F1}, volume {volume / exact:P2} of the capsule");
             Assert.That(quality, Is.GreaterThan(0.4f));
-            Assert.That(ratio, Is.LessThan(massRatioCeiling));
-            Assert.That(volume, Is.EqualTo(exact).Within(0.04f * exact));
+            Assert.That(ratio, Is.LessThan(50f));
+            Assert.That(volume, Is.EqualTo(exact).Within(volumeTolerance * exact));
         }
     }
 }

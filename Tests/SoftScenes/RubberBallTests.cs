@@ -49,11 +49,12 @@ namespace Fulcrum.Tests.SoftScenes
             // damping takes most of it (the block version gets e ~ 0.2). Loose but real: it bounces.
             Assert.That(rebound, Is.GreaterThan(0.01f * Drop), "rebounds more than 1 % of the drop");
             Assert.That(rebound, Is.LessThan(Drop), "never higher than it fell");
-            // Known and reported, not asserted: at the 4.4 m/s impact the bottom vertices sink
-            // 2 cm into the ground within a step and the contact projection pushes them back up
-            // through the layer above: elements invert (min J -3.45), strain energy spikes to
-            // ~10 kJ (27x the drop's 366 J) for three steps, and part of the rebound is that
-            // energy. The ball recovers its shape; these bounds are what holds today.
+            // With sliver-free carved meshes no element inverts at the 4.4 m/s impact (min J
+            // 0.92 / 0.85 / 0.55 at 6 / 8 / 10 cells; the slivered meshes reached -0.52 at 8 and
+            // -1.37 at 10). Reported, not asserted: strain + kinetic energy still rises above
+            // gravity's work during the impact (-0.05 / 17 / 359 J at 6 / 8 / 10 cells, was
+            // 41 / 541 / 2720 J) where the contact projection pushes the bottom layer up.
+            Assert.That(minJ, Is.GreaterThan(0.3f), "no element inverts or is crushed during the impact");
             Assert.That(worstVolume, Is.LessThan(0.15f), "volume within 15 % even through the impact");
             Assert.That(end.VolumeRatio, Is.EqualTo(1f).Within(0.01f), "round again in flight: volume within 1 %");
             Assert.That(end.MinJ, Is.GreaterThan(0.9f), "no element left inverted or crushed");
