@@ -1,4 +1,5 @@
 using System;
+using Fulcrum.Scenes;
 using Fulcrum.SoftBodies;
 using NUnit.Framework;
 
@@ -10,10 +11,12 @@ namespace Fulcrum.Tests.SoftScenes
         // E = 1e6 Pa, nu = 0.49, 1100 kg/m^3) dropped with its bottom 1 m above the ground.
         const float Radius = 0.2f, Drop = 1f;
 
-        [Test]
-        public void Rubber_ball_dropped_from_1m_bounces_and_stays_round()
+        [TestCase(6)]
+        [TestCase(8)]
+        [TestCase(10)]
+        public void Rubber_ball_dropped_from_1m_bounces_and_stays_round(int cells)
         {
-            SoftSceneRun run = SoftSceneRun.Load("rubber-ball-sphere");
+            SoftSceneRun run = SoftSceneRun.Load("rubber-ball-sphere", d => ((SceneSoftSphere)d.SoftBodies[0].Mesh!).Cells = cells);
             SoftBody ball = run.Body;
             float g = 9.81f, mass = ball.TotalMass, startY = ball.ComputeStats().Centroid.Y;
             bool touched = false, left = false;
@@ -36,7 +39,7 @@ namespace Fulcrum.Tests.SoftScenes
             }
             float rebound = apex - Radius;
             float restitution = MathF.Sqrt(MathF.Max(0f, rebound) / Drop);
-            TestContext.Out.WriteLine($"rubber-ball-sphere: rebound apex {rebound:F4} m of a {Drop} m drop ({rebound / Drop:P1}; restitution sqrt(h'/h) = {restitution:F3}); worst volume error {worstVolume:P2}; min J {minJ:F3}; strain + kinetic above gravity's work by at most {worstExcess:F3} J of {mass * g * Drop:F1} J");
+            TestContext.Out.WriteLine($"rubber-ball-sphere, {cells} cells: rebound apex {rebound:F4} m of a {Drop} m drop ({rebound / Drop:P1}; restitution sqrt(h'/h) = {restitution:F3}); worst volume error {worstVolume:P2}; min J {minJ:F3}; strain + kinetic above gravity's work by at most {worstExcess:F3} J of {mass * g * Drop:F1} J");
 
             TestContext.Out.WriteLine($"rubber-ball-sphere: at the apex: volume ratio {end.VolumeRatio:F4}, min J {end.MinJ:F3}");
 
@@ -46,11 +49,12 @@ namespace Fulcrum.Tests.SoftScenes
             // damping takes most of it (the block version gets e ~ 0.2). Loose but real: it bounces.
             Assert.That(rebound, Is.GreaterThan(0.01f * Drop), "rebounds more than 1 % of the drop");
             Assert.That(rebound, Is.LessThan(Drop), "never higher than it fell");
-            // Known and reported, not asserted: at the 4.4 m/s impact the bottom vertices end
-            // steps 3 cm inside the ground and the contact projection pushes them back up
-            // through the layer above: elements invert (min J -0.39), strain + kinetic rises
-            // 540 J above gravity's work (the drop is 366 J), and part of the rebound is that
-            // energy. The ball recovers its shape; these bounds are what holds today.
+            // With sliver-free carved meshes no element inverts at the 4.4 m/s impact (min J
+            // 0.92 / 0.85 / 0.55 at 6 / 8 / 10 cells; the slivered meshes reached -0.52 at 8 and
+            // -1.37 at 10). Reported, not asserted: strain + kinetic energy still rises above
+            // gravity's work during the impact (-0.05 / 17 / 359 J at 6 / 8 / 10 cells, was
+            // 41 / 541 / 2720 J) where the contact projection pushes the bottom layer up.
+            Assert.That(minJ, Is.GreaterThan(0.3f), "no element inverts or is crushed during the impact");
             Assert.That(worstVolume, Is.LessThan(0.15f), "volume within 15 % even through the impact");
             Assert.That(end.VolumeRatio, Is.EqualTo(1f).Within(0.01f), "round again in flight: volume within 1 %");
             Assert.That(end.MinJ, Is.GreaterThan(0.9f), "no element left inverted or crushed");

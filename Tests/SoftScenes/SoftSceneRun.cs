@@ -19,9 +19,10 @@ namespace Fulcrum.Tests.SoftScenes
         /// <summary>Every soft body of the scene, in file order (<see cref="Body"/> is the first).</summary>
         public readonly SoftBody[] All;
 
-        SoftSceneRun(string path)
+        SoftSceneRun(string path, Action<SceneDocument>? edit = null)
         {
             Document = SceneFile.Load(path);
+            edit?.Invoke(Document);
             Scene = SceneBuilder.Build(Document);
             SoftBodyHandle[] made = SceneSoftBodyBuilder.Build(Scene);
             All = new SoftBody[made.Length];
@@ -31,6 +32,9 @@ namespace Fulcrum.Tests.SoftScenes
 
         /// <summary>Loads Samples~/Scenes/<paramref name="name"/>.json, found above the test directory.</summary>
         public static SoftSceneRun Load(string name) => new SoftSceneRun(Path.Combine(ScenesDir(), name + ".json"));
+
+        /// <summary>Loads a scene as <see cref="Load(string)"/> and lets <paramref name="edit"/> change the document before it is built.</summary>
+        public static SoftSceneRun Load(string name, Action<SceneDocument> edit) => new SoftSceneRun(Path.Combine(ScenesDir(), name + ".json"), edit);
 
         public float Timestep => Document.Timestep;
 

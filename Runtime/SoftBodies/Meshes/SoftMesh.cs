@@ -110,6 +110,13 @@ namespace Fulcrum.SoftBodies
             return Box(new Vector3(length, thickness, thickness), cellsAlongLength, across, across, split);
         }
 
+        // A tet is kept when its centroid lies this many cells inside the surface: a tet cut
+        // by the surface with its centroid just inside would be stretched outward by the snap
+        // into a thin element with light corners; dropping it and snapping the layer below
+        // gives rounder elements (8 cells, 4.4 m/s impact: min J 0.63 -> 0.66 and the energy
+        // spike above gravity's work 246 J -> 95 J).
+        const float KeepMargin = 0.25f;
+
         /// <summary>
         /// A ball of <paramref name="radius"/> metres carved from a grid of
         /// <paramref name="cellsAcross"/> cells along its diameter; surface vertices are moved
@@ -120,8 +127,9 @@ namespace Fulcrum.SoftBodies
             Validate.Positive(radius, "mesh.radius");
             CheckCells(cellsAcross, "mesh.cells");
             if (cellsAcross < 2) throw new ArgumentException($"mesh.cells must be >= 2 for a sphere, got {cellsAcross}.", "mesh.cells");
+            float keep = radius - KeepMargin * 2 * radius / cellsAcross;
             GridTetGenerator.Carve(new Vector3(2 * radius), cellsAcross, cellsAcross, cellsAcross,
-                p => p.LengthSquared() <= radius * radius,
+                p => p.LengthSquared() <= keep * keep,
                 p => p.LengthSquared() > 1e-12f ? p * (radius / p.Length()) : p,
                 out Vector3[] v, out int[] t);
             return Validated(v, t, Array.Empty<int>());
@@ -141,8 +149,9 @@ namespace Fulcrum.SoftBodies
             int along = Math.Max(cellsAcross, (int)MathF.Ceiling((2 * halfHeight + 2 * radius) / cell));
             Vector3 size = new Vector3(2 * radius, along * cell, 2 * radius);
             Vector3 Axis(Vector3 p) => new Vector3(0, Math.Clamp(p.Y, -halfHeight, halfHeight), 0);
+            float keep = radius - KeepMargin * cell;
             GridTetGenerator.Carve(size, cellsAcross, along, cellsAcross,
-                p => (p - Axis(p)).LengthSquared() <= radius * radius,
+                p => (p - Axis(p)).LengthSquared() <= keep * keep,
                 p =>
                 {
                     Vector3 d = p - Axis(p);
