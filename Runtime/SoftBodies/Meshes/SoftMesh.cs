@@ -119,8 +119,9 @@ namespace Fulcrum.SoftBodies
 
         /// <summary>
         /// A ball of <paramref name="radius"/> metres carved from a grid of
-        /// <paramref name="cellsAcross"/> cells along its diameter; surface vertices are moved
-        /// onto the sphere where that keeps the tets well shaped.
+        /// <paramref name="cellsAcross"/> cells along its diameter: tets whose centroid lies a
+        /// quarter cell inside are kept, surface vertices are moved onto the sphere, the mesh is
+        /// smoothed so that no element is a sliver, and it is scaled to the ball's volume.
         /// </summary>
         public static SoftMesh Sphere(float radius, int cellsAcross)
         {
