@@ -45,9 +45,10 @@ namespace Fulcrum.Tests.SoftScenes
 
             Assert.That(run.AllFinite(), Is.True);
             Assert.That(left, Is.True, "the ball leaves the ground after the impact");
-            // Real rubber returns 50-80 % of the height; the fixed 0.01 s stiffness-proportional
-            // damping takes most of it (the block version gets e ~ 0.2). Loose but real: it bounces.
-            Assert.That(rebound, Is.GreaterThan(0.01f * Drop), "rebounds more than 1 % of the drop");
+            // Real rubber returns 50-80 % of the height; at the default 0.01 s damping time the
+            // ball returns 32-43 % (6-10 cells). Below 20 % the damping or the contact is eating
+            // the bounce (the in-solve damping of 0.1.0 gave the block e = 0.22, i.e. 5 %).
+            Assert.That(rebound, Is.GreaterThan(0.2f * Drop), "rebounds more than 20 % of the drop");
             Assert.That(rebound, Is.LessThan(Drop), "never higher than it fell");
             // With sliver-free carved meshes no element inverts at the 4.4 m/s impact (min J
             // 0.92 / 0.85 / 0.55 at 6 / 8 / 10 cells; the slivered meshes reached -0.52 at 8 and
