@@ -75,7 +75,7 @@ namespace Fulcrum.Tests.Collision
             top.Rotation = AboutY(20);
             w.AddShape(w.CreateBody(top), ShapeDef.Of(ShapeGeometry.ConvexHull(hull)));
             w.Step(1 / 60f);
-            ContactManifold m = w.Contacts.Manifolds[0];
+            ContactManifold m = w.Contacts[0];
             Assert.That(m.PointCount, Is.EqualTo(4));
             for (int i = 0; i < 4; i++) Assert.That(ContactManifold.Point(ref m, i).Separation, Is.EqualTo(-0.004f).Within(2e-5f));
             var ids = new uint[4];
@@ -83,7 +83,7 @@ namespace Fulcrum.Tests.Collision
             for (int step = 0; step < 10; step++)
             {
                 w.Step(1 / 60f);
-                m = w.Contacts.Manifolds[0];
+                m = w.Contacts[0];
                 Assert.That(m.PointCount, Is.EqualTo(4));
                 for (int i = 0; i < 4; i++)
                 {

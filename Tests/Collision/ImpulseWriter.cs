@@ -16,9 +16,9 @@ namespace Fulcrum.Tests.Collision
         {
             ContactSet set = world.Contacts;
             for (int k = 0; k < set.ManifoldCount; k++)
-                for (int i = 0; i < set.Manifolds[k].PointCount; i++)
+                for (int i = 0; i < set[k].PointCount; i++)
                 {
-                    ref ContactPoint p = ref ContactManifold.Point(ref set.Manifolds[k], i);
+                    ref ContactPoint p = ref ContactManifold.Point(ref set[k], i);
                     p.NormalImpulse = NormalPerPoint * (1 + i);
                     p.AppliedImpulse = p.NormalImpulse;
                     p.TangentImpulse1 = 0.1f * i;

@@ -42,10 +42,10 @@ namespace Fulcrum.Tests.Collision
             Assert.That(w.Contacts.ManifoldCount, Is.EqualTo(2));
             for (int k = 0; k < 2; k++)
             {
-                Assert.That(w.Contacts.Manifolds[k].PointCount, Is.EqualTo(1));
-                Assert.That(w.Contacts.Manifolds[k].Point0.Separation, Is.EqualTo(0f).Within(1e-5f));
+                Assert.That(w.Contacts[k].PointCount, Is.EqualTo(1));
+                Assert.That(w.Contacts[k].Point0.Separation, Is.EqualTo(0f).Within(1e-5f));
             }
-            Assert.That(MathF.Abs(w.Contacts.Manifolds[0].Point0.Position.X), Is.EqualTo(1f).Within(1e-5f));
+            Assert.That(MathF.Abs(w.Contacts[0].Point0.Position.X), Is.EqualTo(1f).Within(1e-5f));
         }
     }
 }

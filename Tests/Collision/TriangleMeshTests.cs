@@ -127,7 +127,7 @@ namespace Fulcrum.Tests.Collision
             w.AddShape(box, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.5f))));
             w.Step(1 / 60f);
             Assert.That(w.Contacts.ManifoldCount, Is.EqualTo(1));
-            Assert.That(w.Contacts.Manifolds[0].PointCount, Is.EqualTo(4));
+            Assert.That(w.Contacts[0].PointCount, Is.EqualTo(4));
             BodyHandle dyn = w.CreateBody(BodyDef.Dynamic(new Vector3(5, 5, 5)));
             Assert.Throws<ArgumentException>(() => w.AddShape(dyn, ShapeDef.Of(ShapeGeometry.TriangleMesh(mesh))));
         }

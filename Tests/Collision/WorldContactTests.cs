@@ -38,7 +38,7 @@ namespace Fulcrum.Tests.Collision
             BodyHandle box = Box(w, new Vector3(1, 0.495f, 0), new Vector3(0.5f));
             w.Step(1 / 60f);
             Assert.That(w.Contacts.ManifoldCount, Is.EqualTo(1));
-            ContactManifold m = w.Contacts.Manifolds[0];
+            ContactManifold m = w.Contacts[0];
             Assert.That(m.PointCount, Is.EqualTo(4));
             Assert.That(m.BodyA, Is.EqualTo(ground.Index));
             Assert.That(m.BodyB, Is.EqualTo(box.Index));
@@ -66,7 +66,7 @@ namespace Fulcrum.Tests.Collision
             w.Step(1 / 60f);
             // What the "solver" wrote for each feature id in the first step.
             var expected = new System.Collections.Generic.Dictionary<uint, (float, float, float)>();
-            ContactManifold first = w.Contacts.Manifolds[0];
+            ContactManifold first = w.Contacts[0];
             for (int i = 0; i < 4; i++)
             {
                 ContactPoint p = ContactManifold.Point(ref first, i);
@@ -88,7 +88,7 @@ namespace Fulcrum.Tests.Collision
             w.SoftBodyStage = null;
             w.Step(1 / 60f);
             Assert.That(w.Contacts.ManifoldCount, Is.EqualTo(1));
-            ContactManifold m = w.Contacts.Manifolds[0];
+            ContactManifold m = w.Contacts[0];
             Assert.That(m.PointCount, Is.EqualTo(4));
             for (int i = 0; i < 4; i++)
             {
@@ -100,7 +100,7 @@ namespace Fulcrum.Tests.Collision
             for (int step = 0; step < 30; step++)
             {
                 w.Step(1 / 60f);
-                m = w.Contacts.Manifolds[0];
+                m = w.Contacts[0];
                 for (int i = 0; i < 4; i++)
                     Assert.That(expected.ContainsKey(ContactManifold.Point(ref m, i).FeatureId), Is.True);
             }
@@ -152,7 +152,7 @@ namespace Fulcrum.Tests.Collision
             Box(w, new Vector3(6, 0.99f, 0), new Vector3(0.5f), layer: 3, mask: 1u << 4);   // does not accept layer 1
             w.Step(1 / 60f);
             Assert.That(w.Contacts.ManifoldCount, Is.EqualTo(1));
-            Assert.That(w.Contacts.Manifolds[0].BodyB, Is.EqualTo(3));
+            Assert.That(w.Contacts[0].BodyB, Is.EqualTo(3));
         }
 
         [Test]
@@ -223,7 +223,7 @@ namespace Fulcrum.Tests.Collision
             w.GetBody(b).LinearVelocity = new Vector3(0, -30, 0);   // 0.5 m per step: gap 0.3 m
             w.Step(1 / 60f);
             Assert.That(w.Contacts.ManifoldCount, Is.EqualTo(1));
-            ContactPoint p = w.Contacts.Manifolds[0].Point0;
+            ContactPoint p = w.Contacts[0].Point0;
             Assert.That(p.Separation, Is.EqualTo(0.3f).Within(1e-4f));
         }
 
@@ -238,7 +238,7 @@ namespace Fulcrum.Tests.Collision
             Assert.That(w.Contacts.ManifoldCount, Is.GreaterThan(20));
             for (int k = 1; k < w.Contacts.ManifoldCount; k++)
             {
-                ContactManifold a = w.Contacts.Manifolds[k - 1], b = w.Contacts.Manifolds[k];
+                ContactManifold a = w.Contacts[k - 1], b = w.Contacts[k];
                 Assert.That(PairMap.Key(a.ShapeA, a.ShapeB), Is.LessThan(PairMap.Key(b.ShapeA, b.ShapeB)));
             }
         }

@@ -154,7 +154,7 @@ namespace Fulcrum.Tests.Solver
                 Ground(w);
                 BodyHandle box = Box(w, new Vector3(0, 0.5f, 0), new Vector3(0.5f), 4f);
                 for (int n = 0; n < 120; n++) w.Step(Dt);
-                ref Fulcrum.Collision.ContactManifold m = ref w.Contacts.Manifolds[0];
+                ref Fulcrum.Collision.ContactManifold m = ref w.Contacts[0];
                 Assert.That(m.PointCount, Is.EqualTo(4));
                 for (int i = 0; i < 4; i++)
                     Assert.That(Fulcrum.Collision.ContactManifold.Point(ref m, i).NormalImpulse, Is.EqualTo(G * Dt).Within(0.002f * G * Dt), $"block={block}");

@@ -89,18 +89,23 @@ namespace Fulcrum.Collision
             else
             {
                 int before = output.PointCount;
-                if (useB) FaceContact(centerB, rotB, hB, centerA, rotA, hA, faceB, true, output);
-                else FaceContact(centerA, rotA, hA, centerB, rotB, hB, faceA, false, output);
+                // In coordinates centred on the reference box: far from the origin (a box 35 m
+                // up a tower) world coordinates round to micrometres, and a separation taken as
+                // the difference of two such numbers would carry that noise into the contact.
+                if (useB) FaceContact(centerB, -d, rotB, hB, rotA, hA, faceB, true, output);
+                else FaceContact(centerA, d, rotA, hA, rotB, hB, faceA, false, output);
                 // Crossed edges within the tolerance can clip to nothing: take the edge pair.
                 if (output.PointCount == before && bestEdge > float.MinValue)
                     EdgeContact(centerA, rotA, hA, centerB, rotB, hB, edgeA, edgeB, output);
             }
         }
 
-        static void FaceContact(Vector3 cR, in Mat3 rR, Vector3 hR, Vector3 cI, in Mat3 rI, Vector3 hI, int axisR, bool referenceIsB, ContactBuffer output)
+        // cI: the incident box's centre relative to the reference box's centre (origin); points
+        // are written at origin + their relative position.
+        static void FaceContact(Vector3 origin, Vector3 cI, in Mat3 rR, Vector3 hR, in Mat3 rI, Vector3 hI, int axisR, bool referenceIsB, ContactBuffer output)
         {
             Vector3 axis = Axis(rR, axisR);
-            float sign = Vector3.Dot(cI - cR, axis) >= 0 ? 1f : -1f;
+            float sign = Vector3.Dot(cI, axis) >= 0 ? 1f : -1f;
             Vector3 n = axis * sign;                      // from the reference box towards the incident one
 
             // Incident face: the face of I most anti-parallel to n.
@@ -130,26 +135,25 @@ namespace Fulcrum.Collision
 
             int a1 = (axisR + 1) % 3, a2 = (axisR + 2) % 3;
             Vector3 r1 = Axis(rR, a1), r2 = Axis(rR, a2);
-            float o1 = Vector3.Dot(r1, cR), o2 = Vector3.Dot(r2, cR);
             float e1 = Comp(hR, a1), e2 = Comp(hR, a2);
             Vector3[] planeN = scratch.PlaneNormals;
             float[] planeD = scratch.PlaneOffsets;
-            planeN[0] = r1; planeD[0] = o1 + e1;
-            planeN[1] = -r1; planeD[1] = -o1 + e1;
-            planeN[2] = r2; planeD[2] = o2 + e2;
-            planeN[3] = -r2; planeD[3] = -o2 + e2;
+            planeN[0] = r1; planeD[0] = e1;
+            planeN[1] = -r1; planeD[1] = e1;
+            planeN[2] = r2; planeD[2] = e2;
+            planeN[3] = -r2; planeD[3] = e2;
             float clipTolerance = 0.001f + 0.002f * MathF.Max(e1, e2);
             int count = PolygonClipper.Clip(pts, keys, segs, 4, planeN, planeD,
                 scratch.OtherPoints, scratch.OtherKeys, scratch.OtherSegments, clipTolerance);
 
             uint refFeature = (uint)((referenceIsB ? 8 : 0) | (axisR * 2 + (sign > 0 ? 0 : 1)));
             uint incFeature = (uint)(j * 2 + (incSign > 0 ? 0 : 1));
-            float faceOffset = Vector3.Dot(cR, n) + Comp(hR, axisR);
+            float faceOffset = Comp(hR, axisR);
             output.BeginPatch(referenceIsB ? -n : n);
             for (int k = 0; k < count; k++)
             {
                 float sep = Vector3.Dot(pts[k], n) - faceOffset;
-                output.Add(pts[k] - 0.5f * sep * n, sep, (refFeature << 24) | (incFeature << 20) | keys[k]);
+                output.Add(origin + (pts[k] - 0.5f * sep * n), sep, (refFeature << 24) | (incFeature << 20) | keys[k]);
             }
         }
 
@@ -160,7 +164,8 @@ namespace Fulcrum.Collision
             if (Vector3.Dot(l, cB - cA) < 0) l = -l;
 
             // The edge of A farthest along l and the edge of B farthest along -l.
-            Vector3 pA = cA;
+            // Relative to A's centre, for the precision reason given in Collide.
+            Vector3 pA = Vector3.Zero;
             uint signsA = 0;
             for (int k = 0; k < 3; k++)
             {
@@ -170,7 +175,7 @@ namespace Fulcrum.Collision
                 pA += ak * (positive ? Comp(hA, k) : -Comp(hA, k));
                 if (positive) signsA |= 1u << k;
             }
-            Vector3 pB = cB;
+            Vector3 pB = cB - cA;
             uint signsB = 0;
             for (int k = 0; k < 3; k++)
             {
@@ -184,7 +189,7 @@ namespace Fulcrum.Collision
             SegmentClosestPoints.Compute(pA - ea, pA + ea, pB - eb, pB + eb, out _, out _, out Vector3 qa, out Vector3 qb);
             float sep = Vector3.Dot(qb - qa, l);
             output.BeginPatch(l);
-            output.Add(0.5f * (qa + qb), sep, 0x80000000u | ((uint)i << 12) | (signsA << 8) | ((uint)j << 4) | signsB);
+            output.Add(cA + 0.5f * (qa + qb), sep, 0x80000000u | ((uint)i << 12) | (signsA << 8) | ((uint)j << 4) | signsB);
         }
 
         static Vector3 Axis(in Mat3 r, int i) => i == 0 ? r.C0 : i == 1 ? r.C1 : r.C2;

@@ -21,5 +21,10 @@ namespace Fulcrum.Collision
         public int DenseIndex;          // position in ContactGraph.Dense, -1 when free
         public ContactFlags Flags;
         public Vector3 RelativeVelocity; // at the manifold's mean point, before the solve
+        // Manifold reuse (ContactFlags.Reusable): B's pose in A's frame and the speculative
+        // distance when the manifolds were last computed by the pair function.
+        public Vector3 ReusePosition;
+        public Quaternion ReuseRotation;
+        public float ReuseSpeculative;
     }
 }

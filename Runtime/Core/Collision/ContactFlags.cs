@@ -15,5 +15,7 @@ namespace Fulcrum.Collision
         Updated = 4,
         /// <summary>Sensor overlap found by this step's narrow phase.</summary>
         Overlapping = 8,
+        /// <summary>The manifolds' points are stored in the shapes' frames and may be reused (see World.ManifoldReuse).</summary>
+        Reusable = 16,
     }
 }

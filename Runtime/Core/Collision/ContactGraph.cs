@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 
 namespace Fulcrum.Collision
 {
@@ -32,6 +33,14 @@ namespace Fulcrum.Collision
         /// <summary>Manifold pool; a contact's manifolds chain through <see cref="ManifoldNext"/>.</summary>
         public ContactManifold[] Manifolds = new ContactManifold[16];
         public int[] ManifoldNext = new int[16];
+        /// <summary>Per manifold, its normal in shape A's frame (for reuse).</summary>
+        public Vector3[] LocalNormal = new Vector3[16];
+        /// <summary>Per manifold point (4 m + i), its point on shape A's surface in A's frame (for reuse).</summary>
+        public Vector3[] LocalPointA = new Vector3[64];
+        /// <summary>Per manifold point (4 m + i), its point on shape B's surface in B's frame (for reuse).</summary>
+        public Vector3[] LocalPointB = new Vector3[64];
+        /// <summary>Per manifold point (4 m + i), the pair function's separation minus what carrying the local points gives (for reuse).</summary>
+        public float[] SeparationOffset = new float[64];
         int _manifoldsUsed;
         int _manifoldFree = -1;
 
@@ -120,6 +129,10 @@ namespace Fulcrum.Collision
             {
                 Array.Resize(ref Manifolds, 2 * Manifolds.Length);
                 Array.Resize(ref ManifoldNext, 2 * ManifoldNext.Length);
+                Array.Resize(ref LocalNormal, Manifolds.Length);
+                Array.Resize(ref LocalPointA, 4 * Manifolds.Length);
+                Array.Resize(ref LocalPointB, 4 * Manifolds.Length);
+                Array.Resize(ref SeparationOffset, 4 * Manifolds.Length);
             }
             ManifoldNext[_manifoldsUsed] = -1;
             return _manifoldsUsed++;
@@ -138,6 +151,7 @@ namespace Fulcrum.Collision
             }
             k.FirstManifold = -1;
             k.ManifoldCount = 0;
+            k.Flags &= ~ContactFlags.Reusable;
         }
 
         void LinkEdge(int edge, int shape)

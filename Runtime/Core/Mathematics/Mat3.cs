@@ -42,13 +42,17 @@ namespace Fulcrum.Mathematics
         /// <summary>The rotation matrix of a unit quaternion.</summary>
         public static Mat3 FromQuaternion(Quaternion q)
         {
-            float xx = q.X * q.X, yy = q.Y * q.Y, zz = q.Z * q.Z;
-            float xy = q.X * q.Y, xz = q.X * q.Z, yz = q.Y * q.Z;
-            float wx = q.W * q.X, wy = q.W * q.Y, wz = q.W * q.Z;
+            // s = 2 / |q|^2 instead of 2: a float quaternion is unit only to about 1e-7, and
+            // the plain formula would scale the axes by |q|^2, which a contact's separation
+            // across a 1 m box reads as a 0.1 micrometre error that changes every step.
+            float s = 2f / (q.X * q.X + q.Y * q.Y + q.Z * q.Z + q.W * q.W);
+            float xx = s * q.X * q.X, yy = s * q.Y * q.Y, zz = s * q.Z * q.Z;
+            float xy = s * q.X * q.Y, xz = s * q.X * q.Z, yz = s * q.Y * q.Z;
+            float wx = s * q.W * q.X, wy = s * q.W * q.Y, wz = s * q.W * q.Z;
             return new Mat3(
-                new Vector3(1 - 2 * (yy + zz), 2 * (xy + wz), 2 * (xz - wy)),
-                new Vector3(2 * (xy - wz), 1 - 2 * (xx + zz), 2 * (yz + wx)),
-                new Vector3(2 * (xz + wy), 2 * (yz - wx), 1 - 2 * (xx + yy)));
+                new Vector3(1 - (yy + zz), xy + wz, xz - wy),
+                new Vector3(xy - wz, 1 - (xx + zz), yz + wx),
+                new Vector3(xz + wy, yz - wx, 1 - (xx + yy)));
         }
 
         /// <summary>The cross-product matrix: <c>Skew(a) * b == Vector3.Cross(a, b)</c>.</summary>

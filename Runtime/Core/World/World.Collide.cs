@@ -197,9 +197,24 @@ namespace Fulcrum
             // Tight bounds farther apart than any speculative distance the pair could have
             // (each shape's own motion bound): no point can come out.
             float reach = sensor ? 0 : SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
+            bool reuse = !sensor && ManifoldReuseEnabled;
+            Pose poseA = default, poseB = default;
             if (Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB]))
             {
                 if (!sensor) speculative = SpeculativeBase + MotionBound(shapeA, shapeB, dt);
+                if (reuse)
+                {
+                    poseA = ShapeWorldPose(shapeA);
+                    poseB = ShapeWorldPose(shapeB);
+                    if (CanReuseManifolds(ct, speculative, poseA, poseB) && ReuseManifolds(ref ct, speculative, poseA, poseB))
+                    {
+                        TakeNarrowResult(c, awakeA, awakeB);
+                        AddToSort(ct.Key, c);
+                        if (!awakeA && Bodies.Type[bodyA] == BodyType.Dynamic) { Wake(bodyA); _anyWoken = true; }
+                        if (!awakeB && Bodies.Type[bodyB] == BodyType.Dynamic) { Wake(bodyB); _anyWoken = true; }
+                        return true;
+                    }
+                }
                 int slot = TakeNarrowResult(c, awakeA, awakeB);
                 if (slot >= 0)
                 {
@@ -209,7 +224,12 @@ namespace Fulcrum
                 else
                 {
                     buffer.Clear(speculative);
-                    CollisionTable.Collide(Shapes.Geometry[shapeA], ShapeWorldPose(shapeA), Shapes.Geometry[shapeB], ShapeWorldPose(shapeB), buffer);
+                    if (!reuse)
+                    {
+                        poseA = ShapeWorldPose(shapeA);
+                        poseB = ShapeWorldPose(shapeB);
+                    }
+                    CollisionTable.Collide(Shapes.Geometry[shapeA], poseA, Shapes.Geometry[shapeB], poseB, buffer);
                 }
             }
             else
@@ -225,6 +245,8 @@ namespace Fulcrum
             if (!reduced) buffer.Reduce();
             WriteManifolds(ref ct, buffer);
             if (ct.ManifoldCount > 0) AddToSort(ct.Key, c);
+            if (reuse && ct.ManifoldCount > 0) RememberManifolds(ref ct, speculative, poseA, poseB);
+            else ct.Flags &= ~ContactFlags.Reusable;
 
             if (ct.ManifoldCount > 0)
             {
@@ -245,6 +267,7 @@ namespace Fulcrum
             NarrowPhaseJob job = _narrowJob ??= new NarrowPhaseJob(this);
             job.Count = 0;
             job.Dt = dt;
+            bool reuse = ManifoldReuseEnabled;
             for (int k = 0; k < g.DenseCount; k++)
             {
                 int c = g.Dense[k];
@@ -257,6 +280,9 @@ namespace Fulcrum
                     continue;
                 float reach = SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
                 if (!Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB])) continue;
+                // The serial pass will most likely carry these manifolds over (it decides again).
+                if (reuse && CanReuseManifolds(ct, SpeculativeBase + MotionBound(shapeA, shapeB, dt), ShapeWorldPose(shapeA), ShapeWorldPose(shapeB)))
+                    continue;
                 job.Add(c, awakeA, awakeB);
             }
             if (job.Count < MinParallelPairs)
@@ -430,9 +456,10 @@ namespace Fulcrum
                         if (sep <= slop) touching++;
                         if (-sep > maxPenetration) maxPenetration = -sep;
                     }
-                    Contacts.Add(mf, m);
+                    Contacts.Add(m);
                 }
             }
+            Contacts.Pool = g.Manifolds;
             StatContactCount = touching;
             if (maxPenetration > StatMaxPenetration) StatMaxPenetration = maxPenetration;
         }
@@ -442,32 +469,6 @@ namespace Fulcrum
             for (int k = 1; k < n; k++)
                 if (keys[k] < keys[k - 1]) return false;
             return true;
-        }
-
-        // The solver wrote this step's impulses into the contact set; hand them back to the
-        // persistent manifolds so the next step can warm start from them.
-        void CopyImpulsesBack()
-        {
-            ContactSet set = Contacts;
-            ContactManifold[] pool = ContactGraph.Manifolds;
-            // Only the solver's outputs flow back: the geometry in the pool is what the set
-            // was copied from, so copying whole manifolds would move ~330 bytes each for ~90.
-            for (int k = 0; k < set.ManifoldCount; k++)
-            {
-                ref ContactManifold from = ref set.Manifolds[k];
-                ref ContactManifold to = ref pool[set.Source[k]];
-                to.RollingImpulse = from.RollingImpulse;
-                for (int i = 0; i < from.PointCount; i++)
-                {
-                    ref ContactPoint a = ref ContactManifold.Point(ref from, i);
-                    ref ContactPoint b = ref ContactManifold.Point(ref to, i);
-                    b.NormalImpulse = a.NormalImpulse;
-                    b.AppliedImpulse = a.AppliedImpulse;
-                    b.TangentImpulse1 = a.TangentImpulse1;
-                    b.TangentImpulse2 = a.TangentImpulse2;
-                    b.RelativeNormalVelocity = a.RelativeNormalVelocity;
-                }
-            }
         }
     }
 }

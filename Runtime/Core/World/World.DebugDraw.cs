@@ -129,7 +129,7 @@ namespace Fulcrum
             ContactSet set = Contacts;
             for (int k = 0; k < set.ManifoldCount; k++)
             {
-                ref ContactManifold m = ref set.Manifolds[k];
+                ref ContactManifold m = ref set[k];
                 for (int i = 0; i < m.PointCount; i++)
                 {
                     ref ContactPoint p = ref ContactManifold.Point(ref m, i);

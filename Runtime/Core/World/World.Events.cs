@@ -31,7 +31,6 @@ namespace Fulcrum
         // contact's touching state (and each sensor's overlap) into begin/persist/end events.
         void PublishEvents()
         {
-            CopyImpulsesBack();
             _queryBoundsStale = true;
             _eventCount = 0;
             for (int i = 0; i < _removalEventCount; i++) AppendEvent(_removalEvents[i]);

@@ -31,20 +31,15 @@ namespace Fulcrum
             return _workers;
         }
 
-        /// <summary>The manifolds of this step as the narrow phase left them (the contact set).</summary>
-        ContactManifold[] StepManifolds(out int count)
-        {
-            count = Contacts.ManifoldCount;
-            return Contacts.Manifolds;
-        }
+        /// <summary>The manifold pool that this step's contact set and the islands index into.</summary>
+        ContactManifold[] StepManifolds() => Contacts.Pool;
 
         // Islands stage: wake what awake bodies touch, list the step's constraints, union-find.
         void BuildIslands()
         {
             _jointBreakCount = 0;
-            ContactManifold[] manifolds = StepManifolds(out int count);
             Joints.EnsureBodies(Bodies.SlotCount);
-            _islands.Build(Bodies, Shapes, manifolds, count, Joints);
+            _islands.Build(Bodies, Shapes, Contacts.Pool, Contacts.Source, Contacts.ManifoldCount, Joints);
         }
 
         // Bodies in no constraint take the plain integrator step; the others go to the solver
@@ -56,7 +51,7 @@ namespace Fulcrum
             if (constrained)
             {
                 _solverContext.Pool = SolverThreads();
-                ContactManifold[] manifolds = StepManifolds(out _);
+                ContactManifold[] manifolds = StepManifolds();
                 _solverContext.Begin(Bodies, Joints, manifolds, _islands, _settings, dt, solver.SubstepCount(_settings));
             }
 
@@ -78,7 +73,7 @@ namespace Fulcrum
         // Sleep half of the last stage: rest timers, then resting islands fall asleep.
         void UpdateSleep(float dt)
         {
-            ContactManifold[] manifolds = StepManifolds(out _);
+            ContactManifold[] manifolds = StepManifolds();
             _islands.UpdateSleep(Bodies, manifolds, Joints, _settings, dt);
         }
 

@@ -6,6 +6,7 @@ namespace Fulcrum
         internal float StatMaxPenetration;
         internal int StatContactCount;
         internal float StatMaxJointError;
+        internal int StatReusedManifoldPairs;
 
         // Cleared at the start of every step; each stage raises what it measures.
         void ResetStatistics()
@@ -13,6 +14,7 @@ namespace Fulcrum
             StatMaxPenetration = 0;
             StatContactCount = 0;
             StatMaxJointError = 0;
+            StatReusedManifoldPairs = 0;
         }
 
         /// <summary>The deepest penetration among the contacts of the last step, metres (&gt;= 0).</summary>
@@ -23,6 +25,12 @@ namespace Fulcrum
 
         /// <summary>The largest position error of any joint after the last step, metres.</summary>
         public float MaxJointError => StatMaxJointError;
+
+        /// <summary>
+        /// Shape pairs whose manifolds the last step carried over instead of colliding again
+        /// (see <see cref="WorldSettings.ManifoldReuseDistance"/>).
+        /// </summary>
+        public int ReusedManifoldPairCount => StatReusedManifoldPairs;
 
         /// <summary>Bodies currently awake (dynamic and kinematic).</summary>
         public int AwakeBodyCount

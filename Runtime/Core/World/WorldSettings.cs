@@ -86,6 +86,17 @@ namespace Fulcrum
         public float RestitutionThreshold;
         /// <summary>Speed cap for any body, m/s (keeps a blown-up scene finite). Default: 400 m/s.</summary>
         public float MaxLinearSpeed;
+        /// <summary>
+        /// Manifold reuse: a touching pair whose relative pose moved less than this distance (m)
+        /// and <see cref="ManifoldReuseAngle"/> since its manifold was computed keeps that
+        /// manifold, its points carried rigidly with the two shapes, instead of running the pair
+        /// function again (the body-pair cache of Jolt). Resting stacks and piles then skip
+        /// nearly all of their narrow phase. 0 turns reuse off. Default: 0.001 m.
+        /// </summary>
+        public float ManifoldReuseDistance;
+        /// <summary>The relative rotation, radians, below which a manifold may be reused (see
+        /// <see cref="ManifoldReuseDistance"/>). 0 turns reuse off. Default: 2 degrees.</summary>
+        public float ManifoldReuseAngle;
 
         /// <summary>The defaults documented on each field.</summary>
         public static WorldSettings Default => new WorldSettings
@@ -112,6 +123,8 @@ namespace Fulcrum
             LinearSlop = 0.005f,
             RestitutionThreshold = 1f,
             MaxLinearSpeed = 400f,
+            ManifoldReuseDistance = 0.001f,
+            ManifoldReuseAngle = 2f * MathF.PI / 180f,
         };
 
         /// <summary>Throws an <see cref="ArgumentException"/> naming the first bad field.</summary>
@@ -136,6 +149,10 @@ namespace Fulcrum
             Mathematics.Validate.NonNegative(LinearSlop, "settings.LinearSlop");
             Mathematics.Validate.NonNegative(RestitutionThreshold, "settings.RestitutionThreshold");
             Mathematics.Validate.Positive(MaxLinearSpeed, "settings.MaxLinearSpeed");
+            Mathematics.Validate.NonNegative(ManifoldReuseDistance, "settings.ManifoldReuseDistance");
+            Mathematics.Validate.NonNegative(ManifoldReuseAngle, "settings.ManifoldReuseAngle");
+            if (ManifoldReuseAngle > MathF.PI)
+                throw new ArgumentException($"settings.ManifoldReuseAngle must be at most pi, got {ManifoldReuseAngle}.", nameof(ManifoldReuseAngle));
         }
     }
 }

@@ -29,7 +29,7 @@ namespace Fulcrum.Dynamics
         /// <summary>Next body of the sleeping island's ring, per body slot; -1 when not in a ring.</summary>
         public int[] SleepNext = Array.Empty<int>();
 
-        /// <summary>Indices (into the contact set) of the manifolds the solver handles this step.</summary>
+        /// <summary>Indices (into the contact graph's manifold pool) of the manifolds the solver handles this step.</summary>
         public int[] Manifolds = Array.Empty<int>();
         public int ManifoldCount;
 
@@ -95,7 +95,7 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>Runs the islands stage over the contact set and the joints.</summary>
-        public void Build(BodyStorage b, ShapeStorage shapes, ContactManifold[] manifolds, int manifoldCount, JointStorage joints)
+        public void Build(BodyStorage b, ShapeStorage shapes, ContactManifold[] manifolds, int[] source, int manifoldCount, JointStorage joints)
         {
             EnsureBodies(b.SlotCount);
 
@@ -106,7 +106,7 @@ namespace Fulcrum.Dynamics
                 woke = false;
                 for (int k = 0; k < manifoldCount; k++)
                 {
-                    ref ContactManifold m = ref manifolds[k];
+                    ref ContactManifold m = ref manifolds[source[k]];
                     if (!IsLiveContact(m, shapes)) continue;
                     woke |= WakePair(b, m.BodyA, m.BodyB);
                 }
@@ -134,11 +134,12 @@ namespace Fulcrum.Dynamics
             if (Manifolds.Length < manifoldCount) Manifolds = new int[Math.Max(16, manifoldCount * 2)];
             for (int k = 0; k < manifoldCount; k++)
             {
-                ref ContactManifold m = ref manifolds[k];
+                int slot = source[k];
+                ref ContactManifold m = ref manifolds[slot];
                 if (!IsLiveContact(m, shapes)) continue;
                 bool a = IsAwakeDynamic(b, m.BodyA), c = IsAwakeDynamic(b, m.BodyB);
                 if (!a && !c) continue;
-                Manifolds[ManifoldCount++] = k;
+                Manifolds[ManifoldCount++] = slot;
                 if (a && c) Union(m.BodyA, m.BodyB);
             }
             JointCount = 0;
