@@ -283,7 +283,9 @@ namespace Fulcrum.Tests.Collision
             {
                 long before = GC.GetAllocatedBytesForCurrentThread();
                 w.Step(1 / 60f);
-                allocated += GC.GetAllocatedBytesForCurrentThread() - before;
+                long a = GC.GetAllocatedBytesForCurrentThread() - before;
+                if (a != 0) TestContext.Out.WriteLine($"ALLOCDIAG step {i}: {a} B, manifolds {w.Contacts.ManifoldCount}, reused {w.ReusedManifoldPairCount}");
+                allocated += a;
             }
             Assert.That(allocated, Is.EqualTo(0));
             Assert.That(w.Contacts.ManifoldCount, Is.GreaterThan(300));

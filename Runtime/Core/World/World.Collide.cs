@@ -17,6 +17,15 @@ namespace Fulcrum
         ulong[] _sortKeys = new ulong[64];
         int[] _sortItems = new int[64];
         int _sortCount;
+        // Last step's contacts in arrival order and in key order: the same arrivals (the usual
+        // case, nothing began or ended) take the same order without sorting again.
+        int[] _lastArrival = new int[64];
+        int[] _lastSorted = new int[64];
+        int _lastSortCount = -1;
+        // Touching points and deepest penetration of this step's listed manifolds, measured
+        // where each manifold is written (its points are in cache there).
+        int _stepTouching;
+        float _stepMaxPenetration;
         bool _anyWoken;
         // Per shape slot: how far the shape can move in this step (refreshed for awake moving
         // shapes by the broad phase; 0 for static ones), and the step its fat box last changed.
@@ -144,6 +153,8 @@ namespace Fulcrum
             Contacts.Clear();
             _anyWoken = false;
             _sortCount = 0;
+            _stepTouching = 0;
+            _stepMaxPenetration = 0;
             ContactGraph g = ContactGraph;
             bool parallel = _settings.Threads > 1 && CollideInParallel(dt);
             int k = 0;
@@ -244,7 +255,11 @@ namespace Fulcrum
             }
             if (!reduced) buffer.Reduce();
             WriteManifolds(ref ct, buffer);
-            if (ct.ManifoldCount > 0) AddToSort(ct.Key, c);
+            if (ct.ManifoldCount > 0)
+            {
+                AddToSort(ct.Key, c);
+                Measure(ct);
+            }
             if (reuse && ct.ManifoldCount > 0) RememberManifolds(ref ct, speculative, poseA, poseB);
             else ct.Flags &= ~ContactFlags.Reusable;
 
@@ -431,37 +446,59 @@ namespace Fulcrum
             _sortCount++;
         }
 
+        // Counts the touching points and the deepest penetration of a contact listed this step.
+        void Measure(in Contact ct)
+        {
+            ContactGraph g = ContactGraph;
+            float slop = _settings.LinearSlop;
+            for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
+            {
+                ref ContactManifold mf = ref g.Manifolds[m];
+                for (int i = 0; i < mf.PointCount; i++)
+                {
+                    float sep = ContactManifold.Point(ref mf, i).Separation;
+                    if (sep <= slop) _stepTouching++;
+                    if (-sep > _stepMaxPenetration) _stepMaxPenetration = -sep;
+                }
+            }
+        }
+
         // Lists the manifolds of this step's updated, non-sensor contacts for the solver,
-        // ordered by shape pair, and measures penetration and contact count.
+        // ordered by shape pair, and publishes the contact count and penetration.
         void GatherManifolds()
         {
             ContactGraph g = ContactGraph;
             int n = _sortCount;
-            // Pair keys are unique and the contact list keeps its order between steps, so the
-            // keys usually arrive sorted: check that in one pass before paying for a sort.
-            if (n > 1 && !IsSorted(_sortKeys, n)) Array.Sort(_sortKeys, _sortItems, 0, n);
-
-            float slop = _settings.LinearSlop;
-            float maxPenetration = 0;
-            int touching = 0;
+            OrderByKey(n);
             for (int k = 0; k < n; k++)
             {
                 ref Contact ct = ref g.Contacts[_sortItems[k]];
                 for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
-                {
-                    ref ContactManifold mf = ref g.Manifolds[m];
-                    for (int i = 0; i < mf.PointCount; i++)
-                    {
-                        float sep = ContactManifold.Point(ref mf, i).Separation;
-                        if (sep <= slop) touching++;
-                        if (-sep > maxPenetration) maxPenetration = -sep;
-                    }
                     Contacts.Add(m);
-                }
             }
             Contacts.Pool = g.Manifolds;
-            StatContactCount = touching;
-            if (maxPenetration > StatMaxPenetration) StatMaxPenetration = maxPenetration;
+            StatContactCount = _stepTouching;
+            if (_stepMaxPenetration > StatMaxPenetration) StatMaxPenetration = _stepMaxPenetration;
+        }
+
+        // Sorts _sortItems[0, n) by pair key, reusing last step's order when the same contacts
+        // arrived in the same order (pair keys are unique, so the order is the same).
+        void OrderByKey(int n)
+        {
+            if (n == _lastSortCount && new ReadOnlySpan<int>(_sortItems, 0, n).SequenceEqual(new ReadOnlySpan<int>(_lastArrival, 0, n)))
+            {
+                Array.Copy(_lastSorted, _sortItems, n);
+                return;
+            }
+            if (_lastArrival.Length < n)
+            {
+                _lastArrival = new int[_sortItems.Length];
+                _lastSorted = new int[_sortItems.Length];
+            }
+            Array.Copy(_sortItems, _lastArrival, n);
+            if (n > 1 && !IsSorted(_sortKeys, n)) PairKeySort.Sort(_sortKeys, _sortItems, n);
+            Array.Copy(_sortItems, _lastSorted, n);
+            _lastSortCount = n;
         }
 
         static bool IsSorted(ulong[] keys, int n)

@@ -55,7 +55,7 @@ namespace Fulcrum
 
             int n = _stepEventCount;
             for (int i = 0; i < n; i++) _stepEventOrder[i] = i;
-            if (n > 1) Array.Sort(_stepEventKeys, _stepEventOrder, 0, n);
+            if (n > 1) PairKeySort.Sort(_stepEventKeys, _stepEventOrder, n);
             for (int i = 0; i < n; i++) AppendEvent(_stepEvents[_stepEventOrder[i]]);
             _stepEventCount = 0;
         }

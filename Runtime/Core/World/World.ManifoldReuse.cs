@@ -46,14 +46,14 @@ namespace Fulcrum
         void RememberManifolds(ref Contact ct, float speculative, in Pose poseA, in Pose poseB)
         {
             ContactGraph g = ContactGraph;
-            Quaternion qa = Quaternion.Normalize(poseA.Rotation), qb = Quaternion.Normalize(poseB.Rotation);
-            Quaternion inverseA = Quaternion.Conjugate(qa), inverseB = Quaternion.Conjugate(qb);
+            Mat3 ra = Mat3.FromQuaternion(poseA.Rotation), rb = Mat3.FromQuaternion(poseB.Rotation);
             Vector3 d = poseB.Position - poseA.Position;
             for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
             {
                 ref ContactManifold mf = ref g.Manifolds[m];
                 Vector3 n = mf.Normal;
-                Vector3 localNormal = g.LocalNormal[m] = Vector3.Transform(n, inverseA);
+                g.LocalNormal[m] = ra.TransposeMultiply(n);
+                Vector3 carriedNormal = ra * g.LocalNormal[m];
                 for (int i = 0; i < mf.PointCount; i++)
                 {
                     ref ContactPoint cp = ref ContactManifold.Point(ref mf, i);
@@ -63,14 +63,12 @@ namespace Fulcrum
                     // moves both alike.
                     Vector3 r = cp.Position - poseB.Position;
                     Vector3 half = 0.5f * cp.Separation * n;
-                    Vector3 la = Vector3.Transform(r + d - half, inverseA), lb = Vector3.Transform(r + half, inverseB);
+                    Vector3 la = ra.TransposeMultiply(r + d - half), lb = rb.TransposeMultiply(r + half);
                     g.LocalPointA[4 * m + i] = la;
                     g.LocalPointB[4 * m + i] = lb;
-                    // What carrying the points gives now, against what the pair function said:
-                    // rotating there and back rounds by about 1e-7 of the lever arm, and in a
-                    // tall stack a steady tilt that size seeds buckling (a 40-box tower drifted
-                    // 170 mm in 10 s instead of 5 mm before this offset was kept).
-                    Carry(localNormal, la, lb, qa, qb, d, out float carried);
+                    // Rotating there and back rounds by about 1e-7 of the lever arm; the offset
+                    // makes a reused separation start from exactly the pair function's answer.
+                    Carry(carriedNormal, la, lb, ra, rb, d, out float carried);
                     g.SeparationOffset[4 * m + i] = cp.Separation - carried;
                 }
             }
@@ -91,22 +89,24 @@ namespace Fulcrum
             float friction = Combine.Values(s.Friction[sa], s.FrictionCombine[sa], s.Friction[sb], s.FrictionCombine[sb]);
             float restitution = Combine.Values(s.Restitution[sa], s.RestitutionCombine[sa], s.Restitution[sb], s.RestitutionCombine[sb]);
             // Relative to B's origin throughout (see RememberManifolds on rounding).
-            Quaternion qa = Quaternion.Normalize(poseA.Rotation), qb = Quaternion.Normalize(poseB.Rotation);
+            Mat3 ra = Mat3.FromQuaternion(poseA.Rotation), rb = Mat3.FromQuaternion(poseB.Rotation);
             Vector3 d = poseB.Position - poseA.Position;
             Vector3 toA = poseB.Position - Bodies.Center[ct.BodyA], toB = poseB.Position - Bodies.Center[ct.BodyB];
+            float slop = _settings.LinearSlop;
             Vector3 sum = Vector3.Zero;
-            int total = 0;
+            int total = 0, touching = 0;
+            float deepest = 0;
             for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
             {
                 ref ContactManifold mf = ref g.Manifolds[m];
-                Vector3 localNormal = g.LocalNormal[m];
-                mf.Normal = Vector3.Transform(localNormal, qa);
+                Vector3 n = ra * g.LocalNormal[m];
+                mf.Normal = n;
                 mf.Friction = friction;
                 mf.Restitution = restitution;
                 for (int i = 0; i < mf.PointCount; i++)
                 {
                     ref ContactPoint cp = ref ContactManifold.Point(ref mf, i);
-                    Vector3 x = Carry(localNormal, g.LocalPointA[4 * m + i], g.LocalPointB[4 * m + i], qa, qb, d, out float separation);
+                    Vector3 x = Carry(n, g.LocalPointA[4 * m + i], g.LocalPointB[4 * m + i], ra, rb, d, out float separation);
                     separation += g.SeparationOffset[4 * m + i];
                     if (!(separation <= speculative)) return false;
                     cp.Position = poseB.Position + x;
@@ -116,10 +116,14 @@ namespace Fulcrum
                     cp.RelativeNormalVelocity = 0;
                     cp.AppliedImpulse = 0;
                     cp.Persisted = true;
+                    if (separation <= slop) touching++;
+                    deepest = MathF.Max(deepest, -separation);
                     sum += x;
                     total++;
                 }
             }
+            _stepTouching += touching;
+            _stepMaxPenetration = MathF.Max(_stepMaxPenetration, deepest);
             if (total > 0)
             {
                 Vector3 at = poseB.Position + sum / total;
@@ -129,14 +133,13 @@ namespace Fulcrum
             return true;
         }
 
-        // The two stored surface points carried with unit rotations qa and qb, B's origin d
-        // from A's: returns their midpoint relative to B's origin and their gap along the
-        // carried normal.
-        static Vector3 Carry(Vector3 localNormal, Vector3 localA, Vector3 localB, Quaternion qa, Quaternion qb, Vector3 d, out float separation)
+        // The two stored surface points carried with rotations ra and rb (B's origin d from
+        // A's) and measured along the carried normal n: returns their midpoint relative to
+        // B's origin.
+        static Vector3 Carry(Vector3 n, Vector3 localA, Vector3 localB, in Mat3 ra, in Mat3 rb, Vector3 d, out float separation)
         {
-            Vector3 n = Vector3.Transform(localNormal, qa);
-            Vector3 pa = Vector3.Transform(localA, qa) - d;
-            Vector3 pb = Vector3.Transform(localB, qb);
+            Vector3 pa = ra * localA - d;
+            Vector3 pb = rb * localB;
             separation = Vector3.Dot(pb - pa, n);
             return 0.5f * (pa + pb);
         }
