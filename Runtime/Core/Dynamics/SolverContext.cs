@@ -472,26 +472,25 @@ namespace Fulcrum.Dynamics
                 SolverContext c = _c;
 #if NET
                 int wideEnd = Math.Min(end, WideCount);
-                int width = ContactSolverWide.Width;
-                for (int i = start; i < wideEnd; i++)
+                if (start < wideEnd)
                 {
-                    int g = WideStart + i;
-                    ref WideContact w = ref c._wide[g];
+                    int first = WideStart + start, last = WideStart + wideEnd;
                     switch (Pass)
                     {
-                        case ColorPass.WarmStart: ContactSolverWide.WarmStart(ref w, c.Bodies, c._wideBodies, g * width); break;
-                        case ColorPass.Solve: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, true); break;
-                        case ColorPass.Relax: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, false); break;
-                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(ref w, c.Bodies, c._wideBodies, g * width, c._settings.RestitutionThreshold); break;
-                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(ref w, c.Bodies, c._wideBodies, g * width); break;
+                        case ColorPass.WarmStart: ContactSolverWide.WarmStart(c._wide, first, last, c.Bodies, c._wideBodies); break;
+                        case ColorPass.Solve: ContactSolverWide.Solve(c._wide, first, last, c.Bodies, c._wideBodies, c._invH, c._settings.MaxContactPushSpeed, true); break;
+                        case ColorPass.Relax: ContactSolverWide.Solve(c._wide, first, last, c.Bodies, c._wideBodies, c._invH, c._settings.MaxContactPushSpeed, false); break;
+                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(c._wide, first, last, c.Bodies, c._wideBodies, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(c._wide, first, last, c.Bodies, c._wideBodies); break;
                         default:
-                        {
                             // The position pass needs only geometry, which the scalar constraints keep.
-                            ReadOnlySpan<int> lanes = c.WideLanes(g);
-                            for (int lane = 0; lane < lanes.Length; lane++)
-                                ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
+                            for (int g = first; g < last; g++)
+                            {
+                                ReadOnlySpan<int> lanes = c.WideLanes(g);
+                                for (int lane = 0; lane < lanes.Length; lane++)
+                                    ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
+                            }
                             break;
-                        }
                     }
                 }
 #endif

@@ -271,8 +271,35 @@ namespace Fulcrum.Dynamics
             l.WB.AddScaled(r.VelocityB, impulse);
         }
 
-        /// <summary>The warm start of a group.</summary>
-        public static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        // The passes run over ranges of groups [first, end): one method call per range keeps
+        // the lane registers' stack home (zeroed on entry) to one per call, not one per group.
+
+        /// <summary>The warm start of groups [first, end).</summary>
+        public static void WarmStart(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies)
+        {
+            for (int g = first; g < end; g++) WarmStart(ref groups[g], bodies, laneBodies, g * Width);
+        }
+
+        /// <summary>One pass (biased or relaxing) over groups [first, end).</summary>
+        public static void Solve(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies, float invH, float maxPushSpeed, bool useBias)
+        {
+            for (int g = first; g < end; g++) Solve(ref groups[g], bodies, laneBodies, g * Width, invH, maxPushSpeed, useBias);
+        }
+
+        /// <summary>ContactSolver.RefreshApproach for groups [first, end).</summary>
+        public static void RefreshApproach(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies)
+        {
+            for (int g = first; g < end; g++) RefreshApproach(ref groups[g], bodies, laneBodies, g * Width);
+        }
+
+        /// <summary>The restitution pass of groups [first, end).</summary>
+        public static void ApplyRestitution(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies, float threshold)
+        {
+            for (int g = first; g < end; g++) ApplyRestitution(ref groups[g], bodies, laneBodies, g * Width, threshold);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
         {
             Gather(bodies, laneBodies, groupOffset, out Lanes l, false);
             WarmRow(w, w.P0.Normal, w.Normal, ref l);
@@ -295,8 +322,9 @@ namespace Fulcrum.Dynamics
             l.WB.AddScaled(r.VelocityB, r.Impulse);
         }
 
-        /// <summary>One pass (biased or relaxing) over a group; the same rows, in the same order, as <see cref="ContactSolver.Solve"/>.</summary>
-        public static void Solve(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, float invH, float maxPushSpeed, bool useBias)
+        // One pass (biased or relaxing) over a group; the same rows, in the same order, as ContactSolver.Solve.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Solve(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, float invH, float maxPushSpeed, bool useBias)
         {
             Gather(bodies, laneBodies, groupOffset, out Lanes l, true);
             WideVector3 dp = l.DpB;
@@ -414,8 +442,8 @@ namespace Fulcrum.Dynamics
             ApplyNormal(w, p2.Normal, d2, ref l);
         }
 
-        /// <summary>ContactSolver.RefreshApproach for a group.</summary>
-        public static void RefreshApproach(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void RefreshApproach(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
         {
             if (Vector.EqualsAll(w.Restitution, Vector<float>.Zero)) return;
             Gather(bodies, laneBodies, groupOffset, out Lanes l, false);
@@ -431,8 +459,8 @@ namespace Fulcrum.Dynamics
             p.RelativeVelocity = Vector.ConditionalSelect(untouched, RowVelocity(p.Normal, w.Normal, l), p.RelativeVelocity);
         }
 
-        /// <summary>The restitution pass of a group.</summary>
-        public static void ApplyRestitution(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void ApplyRestitution(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold)
         {
             if (Vector.EqualsAll(w.Restitution, Vector<float>.Zero)) return;
             Gather(bodies, laneBodies, groupOffset, out Lanes l, false);
