@@ -61,6 +61,8 @@ namespace Fulcrum.Dynamics
         int _wideGroups;
 #if NET
         WideContact[] _wide = Array.Empty<WideContact>();
+        WideImpact[] _wideImpact = Array.Empty<WideImpact>();
+        int[] _wideManifold = Array.Empty<int>();
         int[] _wideBodies = Array.Empty<int>();
         int[] _wideSlots = Array.Empty<int>();
         int[] _wideSource = Array.Empty<int>();
@@ -317,11 +319,18 @@ namespace Fulcrum.Dynamics
             if (_wide.Length < _wideGroups)
             {
                 _wide = new WideContact[2 * _wideGroups];
+                _wideImpact = new WideImpact[2 * _wideGroups];
+                _wideManifold = new int[2 * _wideGroups * width];
                 _wideBodies = new int[2 * 2 * _wideGroups * width];
                 _wideSlots = new int[2 * 4 * _wideGroups * width];
             }
             for (int g = 0; g < _wideGroups; g++)
-                ContactSolverWide.Load(ref _wide[g], _wideBodies, g * width, WideLanes(g), Contacts, Points, Bodies, _wideSlots);
+            {
+                ReadOnlySpan<int> used = WideLanes(g);
+                ContactSolverWide.Load(ref _wide[g], ref _wideImpact[g], _wideBodies, g * width, used, Contacts, Points, _wideSlots);
+                for (int lane = 0; lane < width; lane++)
+                    _wideManifold[g * width + lane] = lane < used.Length ? Contacts[used[lane]].Manifold : -1;
+            }
 #endif
         }
 
@@ -478,10 +487,10 @@ namespace Fulcrum.Dynamics
                     switch (Pass)
                     {
                         case ColorPass.WarmStart: ContactSolverWide.WarmStart(c._wide, first, last, c.Bodies, c._wideBodies); break;
-                        case ColorPass.Solve: ContactSolverWide.Solve(c._wide, first, last, c.Bodies, c._wideBodies, c._invH, c._settings.MaxContactPushSpeed, true); break;
-                        case ColorPass.Relax: ContactSolverWide.Solve(c._wide, first, last, c.Bodies, c._wideBodies, c._invH, c._settings.MaxContactPushSpeed, false); break;
-                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(c._wide, first, last, c.Bodies, c._wideBodies, c._settings.RestitutionThreshold); break;
-                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(c._wide, first, last, c.Bodies, c._wideBodies); break;
+                        case ColorPass.Solve: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, true); break;
+                        case ColorPass.Relax: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, false); break;
+                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies); break;
                         default:
                             // The position pass needs only geometry, which the scalar constraints keep.
                             for (int g = first; g < last; g++)
@@ -596,24 +605,9 @@ namespace Fulcrum.Dynamics
                 }
             }
 #if NET
-            for (int g = 0; g < _wideGroups; g++)
-            {
-                ref WideContact w = ref _wide[g];
-                Accumulate(ref w.P0);
-                Accumulate(ref w.P1);
-                Accumulate(ref w.P2);
-                Accumulate(ref w.P3);
-            }
+            for (int g = 0; g < _wideGroups; g++) ContactSolverWide.Accumulate(_wide[g], ref _wideImpact[g]);
 #endif
         }
-
-#if NET
-        static void Accumulate(ref WidePoint p)
-        {
-            p.Applied += p.Normal.Impulse;
-            p.LastSubstep = p.Normal.Impulse;
-        }
-#endif
 
         /// <summary>
         /// Ends the step: impulses back into the manifolds (per step: times the substep count),
@@ -630,7 +624,7 @@ namespace Fulcrum.Dynamics
 #if NET
             int width = ContactSolverWide.Width;
             for (int g = 0; g < _wideGroups; g++)
-                ContactSolverWide.Store(_wide[g], _wideSlots, g * width, WideLanes(g), Contacts, Points, _manifolds, scale);
+                ContactSolverWide.Store(_wide[g], _wideImpact[g], _wideSlots, _wideManifold, g * width, _manifolds, scale);
 #endif
             float maxError = 0;
             for (int k = 0; k < JointCount; k++)
