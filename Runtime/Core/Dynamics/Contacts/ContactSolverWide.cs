@@ -18,7 +18,7 @@ namespace Fulcrum.Dynamics
     /// (PGS's position pass runs scalar on the same constraints: it needs only their geometry.) The block LCP's four cases are all evaluated and the first that holds is
     /// selected per lane, as the scalar enumeration does.
     /// </summary>
-    internal static class ContactSolverWide
+    internal static partial class ContactSolverWide
     {
         public static int Width => Vector<float>.Count;
 
