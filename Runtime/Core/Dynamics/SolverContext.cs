@@ -428,7 +428,7 @@ namespace Fulcrum.Dynamics
             for (int g = 0; g < _wideGroups; g++)
             {
                 ReadOnlySpan<int> used = WideLanes(g);
-                ContactSolverWide.Load(ref _wide[g], ref _wideImpact[g], _wideBodies, g * width, used, Contacts, Points, _wideSlots);
+                ContactSolverWide.Load(ref _wide[g], ref _wideImpact[g], _wideBodies, g * width, used, Contacts, Points, _manifolds, _wideSlots);
                 for (int lane = 0; lane < width; lane++)
                     _wideManifold[g * width + lane] = lane < used.Length ? Contacts[used[lane]].Manifold : -1;
             }

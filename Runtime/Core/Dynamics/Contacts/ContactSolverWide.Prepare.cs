@@ -105,14 +105,6 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static WideVector3 Cross(in WideVector3 a, in WideVector3 b) => new WideVector3
-        {
-            X = a.Y * b.Z - a.Z * b.Y,
-            Y = a.Z * b.X - a.X * b.Z,
-            Z = a.X * b.Y - a.Y * b.X,
-        };
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<float> Inverse(Vector<float> k) =>
             Vector.ConditionalSelect(Vector.GreaterThan(k, new Vector<float>(1e-30f)), Vector<float>.One / k, Vector<float>.Zero);
 
@@ -121,8 +113,8 @@ namespace Fulcrum.Dynamics
         static PreparedRow Row(in WideVector3 rA, in WideVector3 rB, in WideVector3 n, Vector<float> mass, in Lanes l)
         {
             PreparedRow r;
-            r.AngularA = Cross(rA, n);
-            r.AngularB = Cross(rB, n);
+            r.AngularA = WideVector3.Cross(rA, n);
+            r.AngularB = WideVector3.Cross(rB, n);
             r.VelocityA = l.IA.Transform(r.AngularA);
             r.VelocityB = l.IB.Transform(r.AngularB);
             r.K = mass + WideVector3.Dot(r.AngularA, r.VelocityA) + WideVector3.Dot(r.AngularB, r.VelocityB);
@@ -215,17 +207,11 @@ namespace Fulcrum.Dynamics
             cB = WideVector3.Scale(cB, quarter);
             Tangents(n, out WideVector3 t1, out WideVector3 t2);
             w.Normal = n;
-            w.Tangent1 = t1;
-            w.Tangent2 = t2;
             w.Friction = m.Friction;
-            w.FrictionAngularA1 = Cross(cA, t1);
-            w.FrictionAngularB1 = Cross(cB, t1);
-            w.FrictionAngularA2 = Cross(cA, t2);
-            w.FrictionAngularB2 = Cross(cB, t2);
-            w.FrictionMass1 = Inverse(mass + WideVector3.Dot(w.FrictionAngularA1, l.IA.Transform(w.FrictionAngularA1))
-                + WideVector3.Dot(w.FrictionAngularB1, l.IB.Transform(w.FrictionAngularB1)));
-            w.FrictionMass2 = Inverse(mass + WideVector3.Dot(w.FrictionAngularA2, l.IA.Transform(w.FrictionAngularA2))
-                + WideVector3.Dot(w.FrictionAngularB2, l.IB.Transform(w.FrictionAngularB2)));
+            w.CentroidA = cA;
+            w.CentroidB = cB;
+            w.FrictionMass1 = FrictionMass(cA, cB, t1, mass, l);
+            w.FrictionMass2 = FrictionMass(cA, cB, t2, mass, l);
             w.FrictionImpulse1 = warm * m.Tangent1;
             w.FrictionImpulse2 = warm * m.Tangent2;
 
@@ -240,6 +226,14 @@ namespace Fulcrum.Dynamics
             return reject;
         }
 
+        // ContactRow.Setup's effective mass of a friction row at the centroid.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static Vector<float> FrictionMass(in WideVector3 cA, in WideVector3 cB, in WideVector3 t, Vector<float> mass, in Lanes l)
+        {
+            WideVector3 angularA = WideVector3.Cross(cA, t), angularB = WideVector3.Cross(cB, t);
+            return Inverse(mass + WideVector3.Dot(angularA, l.IA.Transform(angularA)) + WideVector3.Dot(angularB, l.IB.Transform(angularB)));
+        }
+
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<float> Arm(in WideVector3 anchor, in WideVector3 centroid, in WideVector3 n)
         {
@@ -247,17 +241,6 @@ namespace Fulcrum.Dynamics
             d.Subtract(centroid);
             d.SubtractScaled(n, WideVector3.Dot(d, n));
             return Vector.SquareRoot(WideVector3.Dot(d, d));
-        }
-
-        // TangentBasis.Build, lane-wise.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Tangents(in WideVector3 n, out WideVector3 t1, out WideVector3 t2)
-        {
-            Vector<float> sign = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(n.Z, Vector<float>.Zero), Vector<float>.One, new Vector<float>(-1f));
-            Vector<float> a = new Vector<float>(-1f) / (sign + n.Z);
-            Vector<float> b = n.X * n.Y * a;
-            t1 = new WideVector3 { X = Vector<float>.One + sign * n.X * n.X * a, Y = sign * b, Z = -sign * n.X };
-            t2 = new WideVector3 { X = b, Y = sign + n.Y * n.Y * a, Z = -n.Y };
         }
 
         // ContactBlockSolver.MakePair: K of the pair, and the lanes (bits) where it is ill-conditioned.

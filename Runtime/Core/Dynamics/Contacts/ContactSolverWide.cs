@@ -33,7 +33,7 @@ namespace Fulcrum.Dynamics
         /// index in its manifold.
         /// </summary>
         public static void Load(ref WideContact w, ref WideImpact impact, int[] laneBodies, int groupOffset, ReadOnlySpan<int> source,
-            ContactConstraint[] contacts, ContactConstraintPoint[] points, int[] laneSlots)
+            ContactConstraint[] contacts, ContactConstraintPoint[] points, ContactManifold[] manifolds, int[] laneSlots)
         {
             int width = Width;
             // Every field of a used lane is written below: only padding lanes need the clear.
@@ -71,14 +71,18 @@ namespace Fulcrum.Dynamics
                 WideVector3.Lane(ref w.K12b, lane) = c.Block1.K12;
                 WideVector3.Lane(ref w.K22b, lane) = c.Block1.K22;
                 w.Normal.Set(lane, c.Normal);
-                w.Tangent1.Set(lane, c.Tangent1);
-                w.Tangent2.Set(lane, c.Tangent2);
                 WideVector3.Lane(ref w.Friction, lane) = c.Friction;
                 WideVector3.Lane(ref impact.Restitution, lane) = c.Restitution;
-                w.FrictionAngularA1.Set(lane, c.Friction1.AngularA);
-                w.FrictionAngularB1.Set(lane, c.Friction1.AngularB);
-                w.FrictionAngularA2.Set(lane, c.Friction2.AngularA);
-                w.FrictionAngularB2.Set(lane, c.Friction2.AngularB);
+                // The friction rows' centroid, summed as ContactSolver.Prepare sums it.
+                ref ContactManifold m = ref manifolds[c.Manifold];
+                Vector3 centroidA = Vector3.Zero, centroidB = Vector3.Zero;
+                for (int i = 0; i < 4; i++)
+                {
+                    centroidA += ContactManifold.Point(ref m, i).AnchorA;
+                    centroidB += ContactManifold.Point(ref m, i).AnchorB;
+                }
+                w.CentroidA.Set(lane, centroidA * 0.25f);
+                w.CentroidB.Set(lane, centroidB * 0.25f);
                 WideVector3.Lane(ref w.FrictionMass1, lane) = c.Friction1.EffectiveMass;
                 WideVector3.Lane(ref w.FrictionMass2, lane) = c.Friction2.EffectiveMass;
                 WideVector3.Lane(ref w.FrictionImpulse1, lane) = c.Friction1.Impulse;
@@ -319,22 +323,23 @@ namespace Fulcrum.Dynamics
             Gather(bodies, laneBodies, groupOffset, out Lanes l, true, false);
             Vector<float> l0 = w.P0.Impulse, l1 = w.P1.Impulse, l2 = w.P2.Impulse, l3 = w.P3.Impulse;
             Vector<float> f1 = w.FrictionImpulse1, f2 = w.FrictionImpulse2;
+            Tangents(w.Normal, out WideVector3 t1, out WideVector3 t2);
+            WideVector3 friction = WideVector3.Scale(t1, f1);
+            friction.AddScaled(t2, f2);
             WideVector3 linear = WideVector3.Scale(w.Normal, l0 + l1 + l2 + l3);
-            linear.AddScaled(w.Tangent1, f1);
-            linear.AddScaled(w.Tangent2, f2);
-            WideVector3 angularA = WideVector3.Scale(w.P0.AngularA, l0);
+            linear.Add(friction);
+            // The friction rows' angular parts are c x t: their impulse's moment is c x (f1 t1 + f2 t2).
+            WideVector3 angularA = WideVector3.Cross(w.CentroidA, friction);
+            angularA.AddScaled(w.P0.AngularA, l0);
             angularA.AddScaled(w.P1.AngularA, l1);
             angularA.AddScaled(w.P2.AngularA, l2);
             angularA.AddScaled(w.P3.AngularA, l3);
-            angularA.AddScaled(w.FrictionAngularA1, f1);
-            angularA.AddScaled(w.FrictionAngularA2, f2);
             angularA.AddScaled(w.Normal, w.TwistImpulse);
-            WideVector3 angularB = WideVector3.Scale(w.P0.AngularB, l0);
+            WideVector3 angularB = WideVector3.Cross(w.CentroidB, friction);
+            angularB.AddScaled(w.P0.AngularB, l0);
             angularB.AddScaled(w.P1.AngularB, l1);
             angularB.AddScaled(w.P2.AngularB, l2);
             angularB.AddScaled(w.P3.AngularB, l3);
-            angularB.AddScaled(w.FrictionAngularB1, f1);
-            angularB.AddScaled(w.FrictionAngularB2, f2);
             angularB.AddScaled(w.Normal, w.TwistImpulse);
             Apply(linear, angularA, angularB, ref l);
             Scatter(bodies, laneBodies, groupOffset, ref l);
@@ -376,8 +381,14 @@ namespace Fulcrum.Dynamics
             Vector<float> total = w.P0.Impulse + w.P1.Impulse + w.P2.Impulse + w.P3.Impulse;
             Vector<float> maxFriction = w.Friction * total;
             Vector<float> old1 = w.FrictionImpulse1, old2 = w.FrictionImpulse2;
-            Vector<float> new1 = old1 - w.FrictionMass1 * RowVelocity(w.FrictionAngularA1, w.FrictionAngularB1, w.Tangent1, l);
-            Vector<float> new2 = old2 - w.FrictionMass2 * RowVelocity(w.FrictionAngularA2, w.FrictionAngularB2, w.Tangent2, l);
+            // J v of the rows c x t: t . (the velocity of B's centroid point - A's).
+            Tangents(w.Normal, out WideVector3 t1, out WideVector3 t2);
+            WideVector3 dv = l.VB;
+            dv.Add(WideVector3.Cross(l.WB, w.CentroidB));
+            dv.Subtract(l.VA);
+            dv.Subtract(WideVector3.Cross(l.WA, w.CentroidA));
+            Vector<float> new1 = old1 - w.FrictionMass1 * WideVector3.Dot(t1, dv);
+            Vector<float> new2 = old2 - w.FrictionMass2 * WideVector3.Dot(t2, dv);
             Vector<float> len2 = new1 * new1 + new2 * new2;
             Vector<float> scale = Vector.ConditionalSelect(Vector.GreaterThan(len2, maxFriction * maxFriction),
                 maxFriction / Vector.SquareRoot(len2), Vector<float>.One);
@@ -386,12 +397,10 @@ namespace Fulcrum.Dynamics
             w.FrictionImpulse1 = new1;
             w.FrictionImpulse2 = new2;
             Vector<float> d1 = new1 - old1, d2 = new2 - old2;
-            WideVector3 linear = WideVector3.Scale(w.Tangent1, d1);
-            linear.AddScaled(w.Tangent2, d2);
-            WideVector3 angularA = WideVector3.Scale(w.FrictionAngularA1, d1);
-            angularA.AddScaled(w.FrictionAngularA2, d2);
-            WideVector3 angularB = WideVector3.Scale(w.FrictionAngularB1, d1);
-            angularB.AddScaled(w.FrictionAngularB2, d2);
+            WideVector3 linear = WideVector3.Scale(t1, d1);
+            linear.AddScaled(t2, d2);
+            WideVector3 angularA = WideVector3.Cross(w.CentroidA, linear);
+            WideVector3 angularB = WideVector3.Cross(w.CentroidB, linear);
             Apply(linear, angularA, angularB, ref l);
 
             Vector<float> maxTwist = maxFriction * w.TwistRadius;
@@ -404,6 +413,17 @@ namespace Fulcrum.Dynamics
             l.WA.Subtract(l.IA.Transform(spin));
             l.WB.Add(l.IB.Transform(spin));
             Scatter(bodies, laneBodies, groupOffset, ref l);
+        }
+
+        // TangentBasis.Build, lane-wise.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Tangents(in WideVector3 n, out WideVector3 t1, out WideVector3 t2)
+        {
+            Vector<float> sign = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(n.Z, Vector<float>.Zero), Vector<float>.One, new Vector<float>(-1f));
+            Vector<float> a = new Vector<float>(-1f) / (sign + n.Z);
+            Vector<float> b = n.X * n.Y * a;
+            t1 = new WideVector3 { X = Vector<float>.One + sign * n.X * n.X * a, Y = sign * b, Z = -sign * n.X };
+            t2 = new WideVector3 { X = b, Y = sign + n.Y * n.Y * a, Z = -n.Y };
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
