@@ -208,9 +208,8 @@ namespace Fulcrum.Dynamics
             Array.Clear(_contactCursor, 0, Buckets);
             Array.Clear(_jointCursor, 0, Buckets);
             Array.Clear(_pointCursor, 0, Buckets);
-            bool direct = false;
 #if NET
-            direct = wide && WideContacts && !keepRows && _settings.BlockSolver && Vector.IsHardwareAccelerated;
+            bool direct = wide && WideContacts && !keepRows && _settings.BlockSolver && Vector.IsHardwareAccelerated;
             if (direct) Array.Clear(_wideCursor, 0, Buckets);
 #endif
             for (int k = 0; k < nm; k++)
