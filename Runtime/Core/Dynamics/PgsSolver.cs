@@ -20,7 +20,7 @@ namespace Fulcrum.Dynamics
             ref readonly WorldSettings s = ref context.Settings;
             BodyStorage bodies = context.Storage;
             Integrator.IntegrateVelocities(bodies, context.BodySlot, 1, context.BodyCount - 1, s.Gravity, dt, s.MaxLinearSpeed);
-            context.Prepare(islands, wide: true);
+            context.Prepare(islands, wide: true, keepRows: true);
             context.WarmStart();
             for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: false);
             context.StoreVelocities();

@@ -61,6 +61,11 @@ namespace Fulcrum.Dynamics
         int _wideGroups;
 #if NET
         WideContact[] _wide = Array.Empty<WideContact>();
+        WideImpact[] _wideImpact = Array.Empty<WideImpact>();
+        int[] _wideManifold = Array.Empty<int>();
+        int[] _rejected = Array.Empty<int>();
+        readonly int[] _rejectedStart = new int[Buckets + 1];
+        readonly int[] _wideCursor = new int[Buckets];
         int[] _wideBodies = Array.Empty<int>();
         int[] _wideSlots = Array.Empty<int>();
         int[] _wideSource = Array.Empty<int>();
@@ -94,7 +99,7 @@ namespace Fulcrum.Dynamics
         public bool HasRestitution;
 
         /// <summary>True when the step has any constraint to solve.</summary>
-        public bool HasWork => ContactCount > 0 || JointCount > 0;
+        public bool HasWork => ContactCount > 0 || JointCount > 0 || _wideGroups > 0;
 
         /// <summary>
         /// Gives every body that a step constraint touches a solver index (static bodies and
@@ -156,9 +161,12 @@ namespace Fulcrum.Dynamics
 
         /// <summary>
         /// Copies the bodies' state into the solver bodies and builds every constraint of the
-        /// step: colours them, then prepares them in colour order.
+        /// step: colours them, then prepares them in colour order. With <paramref name="wide"/>
+        /// the four-point manifolds go to the SIMD path, prepared lane-wise straight from the
+        /// manifolds, unless <paramref name="keepRows"/> asks for every manifold's scalar rows
+        /// (PGS's position passes read them): the wide groups are then loaded from those.
         /// </summary>
-        public void Prepare(IslandBuilder islands, bool wide = false)
+        public void Prepare(IslandBuilder islands, bool wide = false, bool keepRows = false)
         {
             BodyStorage s = _storage;
             Bodies[0] = new SolverBody { DeltaRotation = Quaternion.Identity };
@@ -200,14 +208,28 @@ namespace Fulcrum.Dynamics
             Array.Clear(_contactCursor, 0, Buckets);
             Array.Clear(_jointCursor, 0, Buckets);
             Array.Clear(_pointCursor, 0, Buckets);
+#if NET
+            bool direct = wide && WideContacts && !keepRows && _settings.BlockSolver && Vector.IsHardwareAccelerated;
+            if (direct) Array.Clear(_wideCursor, 0, Buckets);
+#endif
             for (int k = 0; k < nm; k++)
             {
                 ref ContactManifold m = ref _manifolds[islands.Manifolds[k]];
+                if (m.PointCount > ContactManifold.MaxPoints) m.PointCount = ContactManifold.MaxPoints;
                 int a = IndexOf(m.BodyA), b = IndexOf(m.BodyB);
                 int c = ConstraintColoring.Assign(_colorMask, a, Bodies[a].IsDynamic != 0, b, Bodies[b].IsDynamic != 0);
+#if NET
+                if (direct && c < ConstraintColoring.MaxColors && ContactSolverWide.MayAccept(m))
+                {
+                    // A wide candidate: its colour plus Buckets marks it.
+                    _color[k] = c + Buckets;
+                    _wideCursor[c]++;
+                    continue;
+                }
+#endif
                 _color[k] = c;
                 _contactCursor[c]++;
-                _pointCursor[c] += Math.Min(m.PointCount, ContactManifold.MaxPoints);
+                _pointCursor[c] += m.PointCount;
             }
             for (int k = 0; k < nj; k++)
             {
@@ -217,6 +239,11 @@ namespace Fulcrum.Dynamics
                 _color[nm + k] = c;
                 _jointCursor[c]++;
             }
+            float warmContacts = set.WarmStarting ? _h / _previousDt : 0f;
+            HasRestitution = false;
+#if NET
+            if (direct) PrepareWide(islands, warmContacts);
+#endif
             // Prefix sums: bucket starts, then the counters become insertion cursors.
             int contacts = 0, joints = 0, points = 0;
             for (int c = 0; c < Buckets; c++)
@@ -240,22 +267,26 @@ namespace Fulcrum.Dynamics
             if (Points.Length < points) Points = new ContactConstraintPoint[Math.Max(64, points * 2)];
             if (JointOrder.Length < joints) JointOrder = new int[Math.Max(16, joints * 2)];
 
-            float warmContacts = set.WarmStarting ? _h / _previousDt : 0f;
             bool block = set.BlockSolver;
-            HasRestitution = false;
             for (int k = 0; k < nm; k++)
             {
-                int mi = islands.Manifolds[k];
-                ref ContactManifold m = ref _manifolds[mi];
-                if (m.PointCount > ContactManifold.MaxPoints) m.PointCount = ContactManifold.MaxPoints;
-                HasRestitution |= m.Restitution > 0;
                 int c = _color[k];
-                int at = _contactCursor[c]++;
-                int firstPoint = _pointCursor[c];
-                _pointCursor[c] += m.PointCount;
-                ContactSolver.Prepare(ref Contacts[at], Points, firstPoint, ref m, mi, Bodies, IndexOf(m.BodyA), IndexOf(m.BodyB),
-                    _contactSoftness, _fixedSoftness, warmContacts, block);
+                if (c >= Buckets) continue;
+                PrepareScalar(islands.Manifolds[k], c, warmContacts, block);
             }
+#if NET
+            if (direct)
+            {
+                // The wide path's rejects, colour by colour, after that colour's other contacts.
+                for (int c = 0; c < Buckets; c++)
+                    for (int r = _rejectedStart[c]; r < _rejectedStart[c + 1]; r++)
+                        PrepareScalar(_rejected[r], c, warmContacts, block);
+                if (_scalarContacts.Length < contacts) _scalarContacts = new int[Math.Max(16, 2 * contacts)];
+                for (int k = 0; k < contacts; k++) _scalarContacts[k] = k;
+                Array.Copy(_contactStart, _scalarStart, Buckets + 1);
+            }
+            else
+#endif
             SplitWide(wide && WideContacts);
             float warmJoints = set.WarmStarting ? 1f : 0f;
             for (int k = 0; k < nj; k++)
@@ -270,6 +301,77 @@ namespace Fulcrum.Dynamics
                 RunJoint(ref j, JointSolver.Pass.Prepare);
             }
         }
+
+        void PrepareScalar(int mi, int c, float warmContacts, bool block)
+        {
+            ref ContactManifold m = ref _manifolds[mi];
+            HasRestitution |= m.Restitution > 0;
+            int at = _contactCursor[c]++;
+            int firstPoint = _pointCursor[c];
+            _pointCursor[c] += m.PointCount;
+            ContactSolver.Prepare(ref Contacts[at], Points, firstPoint, ref m, mi, Bodies, IndexOf(m.BodyA), IndexOf(m.BodyB),
+                _contactSoftness, _fixedSoftness, warmContacts, block);
+        }
+
+#if NET
+        // The wide candidates (colour + Buckets in _color) into lanes, colour by colour, each
+        // colour's last group padded; then prepared lane-wise. Rejected lanes are counted into
+        // their colour's scalar contacts.
+        void PrepareWide(IslandBuilder islands, float warmContacts)
+        {
+            int width = ContactSolverWide.Width;
+            int groups = 0;
+            for (int c = 0; c < Buckets; c++)
+            {
+                int count = _wideCursor[c];
+                _wideStart[c] = groups;
+                _wideCursor[c] = groups * width;
+                groups += (count + width - 1) / width;
+            }
+            _wideStart[Buckets] = groups;
+            _wideGroups = groups;
+            int lanes = groups * width;
+            int nm = islands.ManifoldCount;
+            if (_wide.Length < groups)
+            {
+                _wide = new WideContact[2 * groups];
+                _wideImpact = new WideImpact[2 * groups];
+            }
+            if (_wideManifold.Length < lanes)
+            {
+                _wideManifold = new int[2 * lanes];
+                _wideBodies = new int[4 * lanes];
+                _wideSlots = new int[8 * lanes];
+            }
+            if (_rejected.Length < nm) _rejected = new int[Math.Max(16, 2 * nm)];
+            Array.Fill(_wideManifold, -1, 0, lanes);
+            Array.Clear(_wideBodies, 0, 2 * lanes);
+            for (int k = 0; k < nm; k++)
+            {
+                int c = _color[k] - Buckets;
+                if (c < 0) continue;
+                int lane = _wideCursor[c]++;
+                int mi = islands.Manifolds[k];
+                ref ContactManifold m = ref _manifolds[mi];
+                _wideManifold[lane] = mi;
+                _wideBodies[2 * lane] = IndexOf(m.BodyA);
+                _wideBodies[2 * lane + 1] = IndexOf(m.BodyB);
+            }
+            int rejected = 0;
+            for (int c = 0; c < Buckets; c++)
+            {
+                _rejectedStart[c] = rejected;
+                HasRestitution |= ContactSolverWide.Prepare(_wide, _wideImpact, _wideStart[c], _wideStart[c + 1], _wideManifold, _wideBodies,
+                    _wideSlots, _manifolds, Bodies, warmContacts, _rejected, ref rejected);
+                for (int r = _rejectedStart[c]; r < rejected; r++)
+                {
+                    _contactCursor[c]++;
+                    _pointCursor[c] += ContactManifold.MaxPoints;
+                }
+            }
+            _rejectedStart[Buckets] = rejected;
+        }
+#endif
 
         // Sorts each colour's contacts into wide groups (those ContactSolverWide accepts, in
         // groups of Vector<float>.Count, the last one padded) and the scalar rest.
@@ -317,11 +419,18 @@ namespace Fulcrum.Dynamics
             if (_wide.Length < _wideGroups)
             {
                 _wide = new WideContact[2 * _wideGroups];
+                _wideImpact = new WideImpact[2 * _wideGroups];
+                _wideManifold = new int[2 * _wideGroups * width];
                 _wideBodies = new int[2 * 2 * _wideGroups * width];
                 _wideSlots = new int[2 * 4 * _wideGroups * width];
             }
             for (int g = 0; g < _wideGroups; g++)
-                ContactSolverWide.Load(ref _wide[g], _wideBodies, g * width, WideLanes(g), Contacts, Points, Bodies, _wideSlots);
+            {
+                ReadOnlySpan<int> used = WideLanes(g);
+                ContactSolverWide.Load(ref _wide[g], ref _wideImpact[g], _wideBodies, g * width, used, Contacts, Points, _manifolds, _wideSlots);
+                for (int lane = 0; lane < width; lane++)
+                    _wideManifold[g * width + lane] = lane < used.Length ? Contacts[used[lane]].Manifold : -1;
+            }
 #endif
         }
 
@@ -472,26 +581,25 @@ namespace Fulcrum.Dynamics
                 SolverContext c = _c;
 #if NET
                 int wideEnd = Math.Min(end, WideCount);
-                int width = ContactSolverWide.Width;
-                for (int i = start; i < wideEnd; i++)
+                if (start < wideEnd)
                 {
-                    int g = WideStart + i;
-                    ref WideContact w = ref c._wide[g];
+                    int first = WideStart + start, last = WideStart + wideEnd;
                     switch (Pass)
                     {
-                        case ColorPass.WarmStart: ContactSolverWide.WarmStart(ref w, c.Bodies, c._wideBodies, g * width); break;
-                        case ColorPass.Solve: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, true); break;
-                        case ColorPass.Relax: ContactSolverWide.Solve(ref w, c.Bodies, c._wideBodies, g * width, c._invH, c._settings.MaxContactPushSpeed, false); break;
-                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(ref w, c.Bodies, c._wideBodies, g * width, c._settings.RestitutionThreshold); break;
-                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(ref w, c.Bodies, c._wideBodies, g * width); break;
+                        case ColorPass.WarmStart: ContactSolverWide.WarmStart(c._wide, first, last, c.Bodies, c._wideBodies); break;
+                        case ColorPass.Solve: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, true); break;
+                        case ColorPass.Relax: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, false); break;
+                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies); break;
                         default:
-                        {
                             // The position pass needs only geometry, which the scalar constraints keep.
-                            ReadOnlySpan<int> lanes = c.WideLanes(g);
-                            for (int lane = 0; lane < lanes.Length; lane++)
-                                ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
+                            for (int g = first; g < last; g++)
+                            {
+                                ReadOnlySpan<int> lanes = c.WideLanes(g);
+                                for (int lane = 0; lane < lanes.Length; lane++)
+                                    ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
+                            }
                             break;
-                        }
                     }
                 }
 #endif
@@ -597,24 +705,9 @@ namespace Fulcrum.Dynamics
                 }
             }
 #if NET
-            for (int g = 0; g < _wideGroups; g++)
-            {
-                ref WideContact w = ref _wide[g];
-                Accumulate(ref w.P0);
-                Accumulate(ref w.P1);
-                Accumulate(ref w.P2);
-                Accumulate(ref w.P3);
-            }
+            for (int g = 0; g < _wideGroups; g++) ContactSolverWide.Accumulate(_wide[g], ref _wideImpact[g]);
 #endif
         }
-
-#if NET
-        static void Accumulate(ref WidePoint p)
-        {
-            p.Applied += p.Normal.Impulse;
-            p.LastSubstep = p.Normal.Impulse;
-        }
-#endif
 
         /// <summary>
         /// Ends the step: impulses back into the manifolds (per step: times the substep count),
@@ -631,7 +724,7 @@ namespace Fulcrum.Dynamics
 #if NET
             int width = ContactSolverWide.Width;
             for (int g = 0; g < _wideGroups; g++)
-                ContactSolverWide.Store(_wide[g], _wideSlots, g * width, WideLanes(g), Contacts, Points, _manifolds, scale);
+                ContactSolverWide.Store(_wide[g], _wideImpact[g], _wideSlots, _wideManifold, g * width, _manifolds, scale);
 #endif
             float maxError = 0;
             for (int k = 0; k < JointCount; k++)

@@ -7,39 +7,6 @@ using Fulcrum.Collision;
 
 namespace Fulcrum.Dynamics
 {
-    /// <summary>One normal row of a lane group (see <see cref="ContactSolverWide"/>).</summary>
-    internal struct WideRow
-    {
-        public WideVector3 AngularA, AngularB, VelocityA, VelocityB;
-        public Vector<float> EffectiveMass, Impulse;
-    }
-
-    /// <summary>One point slot of a lane group: its normal row and what restitution needs.</summary>
-    internal struct WidePoint
-    {
-        public WideRow Normal;
-        public Vector<float> Separation, RelativeVelocity, MaxNormalImpulse;
-        public Vector<float> Applied, LastSubstep;   // see ContactConstraintPoint
-    }
-
-    /// <summary>
-    /// Vector&lt;float&gt;.Count four-point manifolds of one colour, lane by lane: the data of
-    /// <see cref="ContactConstraint"/> and its points transposed so that every arithmetic
-    /// operation of a pass works on all lanes at once. The point slots are ordered by block
-    /// pair: slots 0-1 are the first pair, 2-3 the second.
-    /// </summary>
-    internal struct WideContact
-    {
-        public WidePoint P0, P1, P2, P3;
-        public Vector<float> K11a, K12a, K22a, K11b, K12b, K22b;
-        public WideVector3 Normal, Tangent1, Tangent2;
-        public Vector<float> InvMassA, InvMassB, Friction, Restitution;
-        public Vector<float> BiasRate, MassScale, ImpulseScale;
-        public WideRow Friction1, Friction2;
-        public WideVector3 TwistVelocityA, TwistVelocityB;
-        public Vector<float> TwistMass, TwistImpulse, TwistRadius;
-    }
-
     /// <summary>
     /// The SIMD path of <see cref="ContactSolver"/> (net10 only; the scalar path is the
     /// reference and runs everywhere else): the same warm start, block-pair normal solve, patch
@@ -51,7 +18,7 @@ namespace Fulcrum.Dynamics
     /// (PGS's position pass runs scalar on the same constraints: it needs only their geometry.) The block LCP's four cases are all evaluated and the first that holds is
     /// selected per lane, as the scalar enumeration does.
     /// </summary>
-    internal static class ContactSolverWide
+    internal static partial class ContactSolverWide
     {
         public static int Width => Vector<float>.Count;
 
@@ -61,14 +28,21 @@ namespace Fulcrum.Dynamics
 
         /// <summary>
         /// Transposes the prepared constraints <paramref name="source"/>[i] into lanes of
-        /// <paramref name="w"/>; unused lanes get the fixed body and inert rows.
+        /// <paramref name="w"/> and <paramref name="impact"/>; unused lanes get the fixed body
+        /// and inert rows. <paramref name="laneSlots"/> gets, per lane and slot, the point's
+        /// index in its manifold.
         /// </summary>
-        public static void Load(ref WideContact w, int[] laneBodies, int groupOffset, ReadOnlySpan<int> source,
-            ContactConstraint[] contacts, ContactConstraintPoint[] points, SolverBody[] bodies, int[] laneSlots)
+        public static void Load(ref WideContact w, ref WideImpact impact, int[] laneBodies, int groupOffset, ReadOnlySpan<int> source,
+            ContactConstraint[] contacts, ContactConstraintPoint[] points, ContactManifold[] manifolds, int[] laneSlots)
         {
             int width = Width;
             // Every field of a used lane is written below: only padding lanes need the clear.
-            if (source.Length < width) w = default;
+            if (source.Length < width)
+            {
+                w = default;
+                impact = default;
+            }
+            w.Loaded = Vector<int>.Zero;
             for (int lane = 0; lane < width; lane++)
             {
                 int at = groupOffset + lane;
@@ -82,14 +56,14 @@ namespace Fulcrum.Dynamics
                 ref ContactConstraint c = ref contacts[source[lane]];
                 laneBodies[2 * at] = c.BodyA;
                 laneBodies[2 * at + 1] = c.BodyB;
-                LoadPoint(ref w.P0, lane, points[c.Block0.I]);
-                LoadPoint(ref w.P1, lane, points[c.Block0.J]);
-                LoadPoint(ref w.P2, lane, points[c.Block1.I]);
-                LoadPoint(ref w.P3, lane, points[c.Block1.J]);
-                laneSlots[4 * at] = c.Block0.I;
-                laneSlots[4 * at + 1] = c.Block0.J;
-                laneSlots[4 * at + 2] = c.Block1.I;
-                laneSlots[4 * at + 3] = c.Block1.J;
+                LoadPoint(ref w.P0, ref impact.P0, lane, points[c.Block0.I]);
+                LoadPoint(ref w.P1, ref impact.P1, lane, points[c.Block0.J]);
+                LoadPoint(ref w.P2, ref impact.P2, lane, points[c.Block1.I]);
+                LoadPoint(ref w.P3, ref impact.P3, lane, points[c.Block1.J]);
+                laneSlots[4 * at] = points[c.Block0.I].ManifoldPoint;
+                laneSlots[4 * at + 1] = points[c.Block0.J].ManifoldPoint;
+                laneSlots[4 * at + 2] = points[c.Block1.I].ManifoldPoint;
+                laneSlots[4 * at + 3] = points[c.Block1.J].ManifoldPoint;
                 WideVector3.Lane(ref w.K11a, lane) = c.Block0.K11;
                 WideVector3.Lane(ref w.K12a, lane) = c.Block0.K12;
                 WideVector3.Lane(ref w.K22a, lane) = c.Block0.K22;
@@ -97,60 +71,75 @@ namespace Fulcrum.Dynamics
                 WideVector3.Lane(ref w.K12b, lane) = c.Block1.K12;
                 WideVector3.Lane(ref w.K22b, lane) = c.Block1.K22;
                 w.Normal.Set(lane, c.Normal);
-                w.Tangent1.Set(lane, c.Tangent1);
-                w.Tangent2.Set(lane, c.Tangent2);
-                WideVector3.Lane(ref w.InvMassA, lane) = c.InvMassA;
-                WideVector3.Lane(ref w.InvMassB, lane) = c.InvMassB;
                 WideVector3.Lane(ref w.Friction, lane) = c.Friction;
-                WideVector3.Lane(ref w.Restitution, lane) = c.Restitution;
-                WideVector3.Lane(ref w.BiasRate, lane) = c.Softness.BiasRate;
-                WideVector3.Lane(ref w.MassScale, lane) = c.Softness.MassScale;
-                WideVector3.Lane(ref w.ImpulseScale, lane) = c.Softness.ImpulseScale;
-                LoadRow(ref w.Friction1, lane, c.Friction1);
-                LoadRow(ref w.Friction2, lane, c.Friction2);
-                w.TwistVelocityA.Set(lane, bodies[c.BodyA].InverseInertia * c.Normal);
-                w.TwistVelocityB.Set(lane, bodies[c.BodyB].InverseInertia * c.Normal);
+                WideVector3.Lane(ref impact.Restitution, lane) = c.Restitution;
+                // The friction rows' centroid, summed as ContactSolver.Prepare sums it.
+                ref ContactManifold m = ref manifolds[c.Manifold];
+                Vector3 centroidA = Vector3.Zero, centroidB = Vector3.Zero;
+                for (int i = 0; i < 4; i++)
+                {
+                    centroidA += ContactManifold.Point(ref m, i).AnchorA;
+                    centroidB += ContactManifold.Point(ref m, i).AnchorB;
+                }
+                w.CentroidA.Set(lane, centroidA * 0.25f);
+                w.CentroidB.Set(lane, centroidB * 0.25f);
+                WideVector3.Lane(ref w.FrictionMass1, lane) = c.Friction1.EffectiveMass;
+                WideVector3.Lane(ref w.FrictionMass2, lane) = c.Friction2.EffectiveMass;
+                WideVector3.Lane(ref w.FrictionImpulse1, lane) = c.Friction1.Impulse;
+                WideVector3.Lane(ref w.FrictionImpulse2, lane) = c.Friction2.Impulse;
                 WideVector3.Lane(ref w.TwistMass, lane) = c.TwistMass;
                 WideVector3.Lane(ref w.TwistImpulse, lane) = c.TwistImpulse;
                 WideVector3.Lane(ref w.TwistRadius, lane) = c.TwistRadius;
             }
         }
 
-        static void LoadRow(ref WideRow r, int lane, in ContactRow s)
+        static void LoadPoint(ref WidePoint p, ref WideImpactPoint i, int lane, in ContactConstraintPoint s)
         {
-            r.AngularA.Set(lane, s.AngularA);
-            r.AngularB.Set(lane, s.AngularB);
-            r.VelocityA.Set(lane, s.VelocityA);
-            r.VelocityB.Set(lane, s.VelocityB);
-            WideVector3.Lane(ref r.EffectiveMass, lane) = s.EffectiveMass;
-            WideVector3.Lane(ref r.Impulse, lane) = s.Impulse;
-        }
-
-        static void LoadPoint(ref WidePoint p, int lane, in ContactConstraintPoint s)
-        {
-            LoadRow(ref p.Normal, lane, s.Normal);
+            p.AngularA.Set(lane, s.Normal.AngularA);
+            p.AngularB.Set(lane, s.Normal.AngularB);
             WideVector3.Lane(ref p.Separation, lane) = s.Separation;
-            WideVector3.Lane(ref p.RelativeVelocity, lane) = s.RelativeVelocity;
-            WideVector3.Lane(ref p.MaxNormalImpulse, lane) = s.MaxNormalImpulse;
-            WideVector3.Lane(ref p.Applied, lane) = 0;
-            WideVector3.Lane(ref p.LastSubstep, lane) = 0;
+            WideVector3.Lane(ref p.Impulse, lane) = s.Normal.Impulse;
+            WideVector3.Lane(ref i.EffectiveMass, lane) = s.Normal.EffectiveMass;
+            WideVector3.Lane(ref i.RelativeVelocity, lane) = s.RelativeVelocity;
+            WideVector3.Lane(ref i.Applied, lane) = 0;
+            WideVector3.Lane(ref i.LastSubstep, lane) = 0;
         }
 
-        /// <summary>The bodies of a group in lanes: velocities and (for the separation update) motion so far.</summary>
+        /// <summary>
+        /// The bodies of a group in lanes: velocities, inverse masses and inertias, the dynamic
+        /// flags and (for the separation update) the motion so far.
+        /// </summary>
         struct Lanes
         {
             public WideVector3 VA, WA, VB, WB, DpA, DpB, DThetaA, DThetaB;
-            // The floats beside the velocities in SolverBody (inverse mass, the dynamic flag),
-            // written back unchanged by the transposing scatter.
-            public Vector<float> PadVA, PadWA, PadVB, PadWB;
+            public WideMatrix3 IA, IB;
+            // The floats beside the velocities in SolverBody: the inverse mass and the dynamic
+            // flag (an int), written back unchanged by the transposing scatter.
+            public Vector<float> InvMassA, FlagA, InvMassB, FlagB;
         }
 
-        static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, out Lanes l, bool motion)
+        /// <summary>The softness of a normal row against a moving body and against a fixed one, in lanes.</summary>
+        readonly struct SoftLanes
+        {
+            public readonly Vector<float> BiasRate, MassScale, ImpulseScale, FixedBiasRate, FixedMassScale, FixedImpulseScale;
+
+            public SoftLanes(in Softness contact, in Softness fixedBody)
+            {
+                BiasRate = new Vector<float>(contact.BiasRate);
+                MassScale = new Vector<float>(contact.MassScale);
+                ImpulseScale = new Vector<float>(contact.ImpulseScale);
+                FixedBiasRate = new Vector<float>(fixedBody.BiasRate);
+                FixedMassScale = new Vector<float>(fixedBody.MassScale);
+                FixedImpulseScale = new Vector<float>(fixedBody.ImpulseScale);
+            }
+        }
+
+        static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, out Lanes l, bool inertia, bool motion)
         {
             if (SolverBodyLanes.IsSupported)
             {
-                GatherSide(bodies, laneBodies, 2 * groupOffset, motion, out l.VA, out l.PadVA, out l.WA, out l.PadWA, out l.DpA, out l.DThetaA);
-                GatherSide(bodies, laneBodies, 2 * groupOffset + 1, motion, out l.VB, out l.PadVB, out l.WB, out l.PadWB, out l.DpB, out l.DThetaB);
+                GatherSide(bodies, laneBodies, 2 * groupOffset, inertia, motion, out l.VA, out l.InvMassA, out l.WA, out l.FlagA, out l.IA, out l.DpA, out l.DThetaA);
+                GatherSide(bodies, laneBodies, 2 * groupOffset + 1, inertia, motion, out l.VB, out l.InvMassB, out l.WB, out l.FlagB, out l.IB, out l.DpB, out l.DThetaB);
                 return;
             }
             l = default;
@@ -163,6 +152,15 @@ namespace Fulcrum.Dynamics
                 l.WA.Set(lane, a.AngularVelocity);
                 l.VB.Set(lane, b.LinearVelocity);
                 l.WB.Set(lane, b.AngularVelocity);
+                WideVector3.Lane(ref l.InvMassA, lane) = a.InverseMass;
+                WideVector3.Lane(ref l.InvMassB, lane) = b.InverseMass;
+                WideVector3.Lane(ref l.FlagA, lane) = BitConverter.Int32BitsToSingle(a.IsDynamic);
+                WideVector3.Lane(ref l.FlagB, lane) = BitConverter.Int32BitsToSingle(b.IsDynamic);
+                if (inertia)
+                {
+                    l.IA.Set(lane, a.InverseInertia);
+                    l.IB.Set(lane, b.InverseInertia);
+                }
                 if (!motion) continue;
                 l.DpA.Set(lane, a.DeltaPosition);
                 l.DpB.Set(lane, b.DeltaPosition);
@@ -173,8 +171,8 @@ namespace Fulcrum.Dynamics
 
         // One side (A: at = 2 groupOffset, B: at + 1) of the eight lanes, by transposes.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void GatherSide(SolverBody[] bodies, int[] laneBodies, int at, bool motion,
-            out WideVector3 v, out Vector<float> padV, out WideVector3 w, out Vector<float> padW, out WideVector3 dp, out WideVector3 dTheta)
+        static void GatherSide(SolverBody[] bodies, int[] laneBodies, int at, bool inertia, bool motion,
+            out WideVector3 v, out Vector<float> invMass, out WideVector3 w, out Vector<float> flag, out WideMatrix3 ii, out WideVector3 dp, out WideVector3 dTheta)
         {
             ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
             ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
@@ -185,19 +183,35 @@ namespace Fulcrum.Dynamics
             ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
             ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
             SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Linear,
-                out Vector<float> vx, out Vector<float> vy, out Vector<float> vz, out padV);
+                out Vector<float> vx, out Vector<float> vy, out Vector<float> vz, out invMass);
             SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Angular,
-                out Vector<float> wx, out Vector<float> wy, out Vector<float> wz, out padW);
+                out Vector<float> wx, out Vector<float> wy, out Vector<float> wz, out flag);
             v = new WideVector3 { X = vx, Y = vy, Z = vz };
             w = new WideVector3 { X = wx, Y = wy, Z = wz };
+            Vector<float> c2z = default, px = default, py = default, pz = default;
+            if (inertia || motion)
+                SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Displacement,
+                    out c2z, out px, out py, out pz);
+            if (inertia)
+            {
+                SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Inertia,
+                    out Vector<float> c0x, out Vector<float> c0y, out Vector<float> c0z, out Vector<float> c1x);
+                SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Inertia + 4,
+                    out Vector<float> c1y, out Vector<float> c1z, out Vector<float> c2x, out Vector<float> c2y);
+                ii = new WideMatrix3
+                {
+                    C0 = new WideVector3 { X = c0x, Y = c0y, Z = c0z },
+                    C1 = new WideVector3 { X = c1x, Y = c1y, Z = c1z },
+                    C2 = new WideVector3 { X = c2x, Y = c2y, Z = c2z },
+                };
+            }
+            else ii = default;
             if (!motion)
             {
                 dp = default;
                 dTheta = default;
                 return;
             }
-            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Displacement,
-                out _, out Vector<float> px, out Vector<float> py, out Vector<float> pz);
             SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Rotation,
                 out Vector<float> qx, out Vector<float> qy, out Vector<float> qz, out Vector<float> qw);
             dp = new WideVector3 { X = px, Y = py, Z = pz };
@@ -207,11 +221,11 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void ScatterSide(SolverBody[] bodies, int[] laneBodies, int at, in WideVector3 v, Vector<float> padV, in WideVector3 w, Vector<float> padW)
+        static void ScatterSide(SolverBody[] bodies, int[] laneBodies, int at, in WideVector3 v, Vector<float> invMass, in WideVector3 w, Vector<float> flag)
         {
             // Only dynamic bodies are written (the flag is the angular block's fourth float).
             int write = (int)Vector256.ExtractMostSignificantBits(
-                ~Vector256.Equals(Vector.AsVectorInt32(padW).AsVector256(), Vector256<int>.Zero));
+                ~Vector256.Equals(Vector.AsVectorInt32(flag).AsVector256(), Vector256<int>.Zero));
             if (write == 0) return;
             ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
             ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
@@ -221,16 +235,16 @@ namespace Fulcrum.Dynamics
             ref float b5 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 10);
             ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
             ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
-            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Linear, v.X, v.Y, v.Z, padV);
-            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Angular, w.X, w.Y, w.Z, padW);
+            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Linear, v.X, v.Y, v.Z, invMass);
+            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Angular, w.X, w.Y, w.Z, flag);
         }
 
         static void Scatter(SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
             if (SolverBodyLanes.IsSupported)
             {
-                ScatterSide(bodies, laneBodies, 2 * groupOffset, l.VA, l.PadVA, l.WA, l.PadWA);
-                ScatterSide(bodies, laneBodies, 2 * groupOffset + 1, l.VB, l.PadVB, l.WB, l.PadWB);
+                ScatterSide(bodies, laneBodies, 2 * groupOffset, l.VA, l.InvMassA, l.WA, l.FlagA);
+                ScatterSide(bodies, laneBodies, 2 * groupOffset + 1, l.VB, l.InvMassB, l.WB, l.FlagB);
                 return;
             }
             int width = Width;
@@ -240,94 +254,154 @@ namespace Fulcrum.Dynamics
                 ref SolverBody b = ref bodies[laneBodies[2 * (groupOffset + lane) + 1]];
                 if (a.IsDynamic != 0)
                 {
-                    a.LinearVelocity = Get(ref l.VA, lane);
-                    a.AngularVelocity = Get(ref l.WA, lane);
+                    a.LinearVelocity = l.VA.Get(lane);
+                    a.AngularVelocity = l.WA.Get(lane);
                 }
                 if (b.IsDynamic != 0)
                 {
-                    b.LinearVelocity = Get(ref l.VB, lane);
-                    b.AngularVelocity = Get(ref l.WB, lane);
+                    b.LinearVelocity = l.VB.Get(lane);
+                    b.AngularVelocity = l.WB.Get(lane);
                 }
             }
         }
 
-        static Vector3 Get(ref WideVector3 v, int lane) =>
-            new Vector3(WideVector3.Lane(ref v.X, lane), WideVector3.Lane(ref v.Y, lane), WideVector3.Lane(ref v.Z, lane));
-
+        /// <summary>J v of a row along <paramref name="d"/> with angular parts <paramref name="angularA"/>, <paramref name="angularB"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static Vector<float> RowVelocity(in WideRow r, in WideVector3 d, in Lanes l)
+        static Vector<float> RowVelocity(in WideVector3 angularA, in WideVector3 angularB, in WideVector3 d, in Lanes l)
         {
             WideVector3 dv = l.VB;
             dv.Subtract(l.VA);
-            return WideVector3.Dot(d, dv) + WideVector3.Dot(r.AngularB, l.WB) - WideVector3.Dot(r.AngularA, l.WA);
+            return WideVector3.Dot(d, dv) + WideVector3.Dot(angularB, l.WB) - WideVector3.Dot(angularA, l.WA);
+        }
+
+        /// <summary>
+        /// Applies the linear impulse <paramref name="linear"/> and the angular impulses
+        /// <paramref name="angularA"/> (taken from A) and <paramref name="angularB"/> (given to B).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Apply(in WideVector3 linear, in WideVector3 angularA, in WideVector3 angularB, ref Lanes l)
+        {
+            l.VA.SubtractScaled(linear, l.InvMassA);
+            l.VB.AddScaled(linear, l.InvMassB);
+            l.WA.Subtract(l.IA.Transform(angularA));
+            l.WB.Add(l.IB.Transform(angularB));
+        }
+
+        // The passes run over ranges of groups [first, end): one method call per range keeps
+        // the lane registers' stack home (zeroed on entry) to one per call, not one per group.
+
+        /// <summary>The warm start of groups [first, end).</summary>
+        public static void WarmStart(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies)
+        {
+            for (int g = first; g < end; g++) WarmStart(ref groups[g], bodies, laneBodies, g * Width);
+        }
+
+        /// <summary>One pass (biased or relaxing) over groups [first, end).</summary>
+        public static void Solve(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies,
+            in Softness contact, in Softness fixedBody, float invH, float maxPushSpeed, bool useBias)
+        {
+            var soft = new SoftLanes(contact, fixedBody);
+            for (int g = first; g < end; g++)
+                Solve(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, soft, invH, maxPushSpeed, useBias);
+        }
+
+        /// <summary>ContactSolver.RefreshApproach for groups [first, end).</summary>
+        public static void RefreshApproach(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies)
+        {
+            for (int g = first; g < end; g++) RefreshApproach(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width);
+        }
+
+        /// <summary>The restitution pass of groups [first, end).</summary>
+        public static void ApplyRestitution(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies, float threshold)
+        {
+            for (int g = first; g < end; g++) ApplyRestitution(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, threshold);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void ApplyNormal(in WideContact w, in WideRow r, Vector<float> impulse, ref Lanes l)
+        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
         {
-            l.VA.SubtractScaled(w.Normal, w.InvMassA * impulse);
-            l.WA.SubtractScaled(r.VelocityA, impulse);
-            l.VB.AddScaled(w.Normal, w.InvMassB * impulse);
-            l.WB.AddScaled(r.VelocityB, impulse);
-        }
-
-        /// <summary>The warm start of a group.</summary>
-        public static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
-        {
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, false);
-            WarmRow(w, w.P0.Normal, w.Normal, ref l);
-            WarmRow(w, w.P1.Normal, w.Normal, ref l);
-            WarmRow(w, w.P2.Normal, w.Normal, ref l);
-            WarmRow(w, w.P3.Normal, w.Normal, ref l);
-            WarmRow(w, w.Friction1, w.Tangent1, ref l);
-            WarmRow(w, w.Friction2, w.Tangent2, ref l);
-            l.WA.SubtractScaled(w.TwistVelocityA, w.TwistImpulse);
-            l.WB.AddScaled(w.TwistVelocityB, w.TwistImpulse);
+            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, false);
+            Vector<float> l0 = w.P0.Impulse, l1 = w.P1.Impulse, l2 = w.P2.Impulse, l3 = w.P3.Impulse;
+            Vector<float> f1 = w.FrictionImpulse1, f2 = w.FrictionImpulse2;
+            Tangents(w.Normal, out WideVector3 t1, out WideVector3 t2);
+            WideVector3 friction = WideVector3.Scale(t1, f1);
+            friction.AddScaled(t2, f2);
+            WideVector3 linear = WideVector3.Scale(w.Normal, l0 + l1 + l2 + l3);
+            linear.Add(friction);
+            // The friction rows' angular parts are c x t: their impulse's moment is c x (f1 t1 + f2 t2).
+            WideVector3 angularA = WideVector3.Cross(w.CentroidA, friction);
+            angularA.AddScaled(w.P0.AngularA, l0);
+            angularA.AddScaled(w.P1.AngularA, l1);
+            angularA.AddScaled(w.P2.AngularA, l2);
+            angularA.AddScaled(w.P3.AngularA, l3);
+            angularA.AddScaled(w.Normal, w.TwistImpulse);
+            WideVector3 angularB = WideVector3.Cross(w.CentroidB, friction);
+            angularB.AddScaled(w.P0.AngularB, l0);
+            angularB.AddScaled(w.P1.AngularB, l1);
+            angularB.AddScaled(w.P2.AngularB, l2);
+            angularB.AddScaled(w.P3.AngularB, l3);
+            angularB.AddScaled(w.Normal, w.TwistImpulse);
+            Apply(linear, angularA, angularB, ref l);
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
+        // One pass (biased or relaxing) over a group; the same rows, in the same order, as ContactSolver.Solve.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void WarmRow(in WideContact w, in WideRow r, in WideVector3 d, ref Lanes l)
+        static void Solve(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, in SoftLanes soft,
+            float invH, float maxPushSpeed, bool useBias)
         {
-            l.VA.SubtractScaled(d, w.InvMassA * r.Impulse);
-            l.WA.SubtractScaled(r.VelocityA, r.Impulse);
-            l.VB.AddScaled(d, w.InvMassB * r.Impulse);
-            l.WB.AddScaled(r.VelocityB, r.Impulse);
-        }
-
-        /// <summary>One pass (biased or relaxing) over a group; the same rows, in the same order, as <see cref="ContactSolver.Solve"/>.</summary>
-        public static void Solve(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, float invH, float maxPushSpeed, bool useBias)
-        {
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, true);
+            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, true);
             WideVector3 dp = l.DpB;
             dp.Subtract(l.DpA);
             Vector<float> drift = WideVector3.Dot(w.Normal, dp);
             var inverseStep = new Vector<float>(invH);
             var maxPush = new Vector<float>(-maxPushSpeed);
-            SolvePair(ref w, ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, drift, inverseStep, maxPush, useBias, ref l);
-            SolvePair(ref w, ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, drift, inverseStep, maxPush, useBias, ref l);
+            // A body that cannot move makes the contact stiffer (ContactSolver.Prepare).
+            var fixedBody = Vector.BitwiseOr(Vector.Equals(Vector.AsVectorInt32(l.FlagA), Vector<int>.Zero),
+                Vector.Equals(Vector.AsVectorInt32(l.FlagB), Vector<int>.Zero));
+            var rate = Vector.ConditionalSelect(fixedBody, soft.FixedBiasRate, soft.BiasRate);
+            var massScale = Vector.ConditionalSelect(fixedBody, soft.FixedMassScale, soft.MassScale);
+            var impulseScale = Vector.ConditionalSelect(fixedBody, soft.FixedImpulseScale, soft.ImpulseScale);
+            Vector<int> loaded = w.Loaded;
+            Vector<int> first = SolvePair(ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, 1, 2, w.Normal, drift, inverseStep, maxPush,
+                rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn0, out Vector<float> vn1, ref l);
+            Vector<int> first2 = SolvePair(ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, 4, 8, w.Normal, drift, inverseStep, maxPush,
+                rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn2, out Vector<float> vn3, ref l);
+            first = Vector.BitwiseOr(first, first2);
+            if (!Vector.EqualsAll(first, Vector<int>.Zero))
+            {
+                // The approach speed of the (sub)step a point first carries load (RecordImpact).
+                RecordImpact(ref impact.P0.RelativeVelocity, first, 1, vn0);
+                RecordImpact(ref impact.P1.RelativeVelocity, first, 2, vn1);
+                RecordImpact(ref impact.P2.RelativeVelocity, first, 4, vn2);
+                RecordImpact(ref impact.P3.RelativeVelocity, first, 8, vn3);
+                w.Loaded = loaded;
+            }
 
-            Vector<float> total = w.P0.Normal.Impulse + w.P1.Normal.Impulse + w.P2.Normal.Impulse + w.P3.Normal.Impulse;
+            Vector<float> total = w.P0.Impulse + w.P1.Impulse + w.P2.Impulse + w.P3.Impulse;
             Vector<float> maxFriction = w.Friction * total;
-            Vector<float> old1 = w.Friction1.Impulse, old2 = w.Friction2.Impulse;
-            Vector<float> new1 = old1 - w.Friction1.EffectiveMass * RowVelocity(w.Friction1, w.Tangent1, l);
-            Vector<float> new2 = old2 - w.Friction2.EffectiveMass * RowVelocity(w.Friction2, w.Tangent2, l);
+            Vector<float> old1 = w.FrictionImpulse1, old2 = w.FrictionImpulse2;
+            // J v of the rows c x t: t . (the velocity of B's centroid point - A's).
+            Tangents(w.Normal, out WideVector3 t1, out WideVector3 t2);
+            WideVector3 dv = l.VB;
+            dv.Add(WideVector3.Cross(l.WB, w.CentroidB));
+            dv.Subtract(l.VA);
+            dv.Subtract(WideVector3.Cross(l.WA, w.CentroidA));
+            Vector<float> new1 = old1 - w.FrictionMass1 * WideVector3.Dot(t1, dv);
+            Vector<float> new2 = old2 - w.FrictionMass2 * WideVector3.Dot(t2, dv);
             Vector<float> len2 = new1 * new1 + new2 * new2;
             Vector<float> scale = Vector.ConditionalSelect(Vector.GreaterThan(len2, maxFriction * maxFriction),
                 maxFriction / Vector.SquareRoot(len2), Vector<float>.One);
             new1 *= scale;
             new2 *= scale;
-            w.Friction1.Impulse = new1;
-            w.Friction2.Impulse = new2;
+            w.FrictionImpulse1 = new1;
+            w.FrictionImpulse2 = new2;
             Vector<float> d1 = new1 - old1, d2 = new2 - old2;
-            l.VA.SubtractScaled(w.Tangent1, w.InvMassA * d1);
-            l.VA.SubtractScaled(w.Tangent2, w.InvMassA * d2);
-            l.WA.SubtractScaled(w.Friction1.VelocityA, d1);
-            l.WA.SubtractScaled(w.Friction2.VelocityA, d2);
-            l.VB.AddScaled(w.Tangent1, w.InvMassB * d1);
-            l.VB.AddScaled(w.Tangent2, w.InvMassB * d2);
-            l.WB.AddScaled(w.Friction1.VelocityB, d1);
-            l.WB.AddScaled(w.Friction2.VelocityB, d2);
+            WideVector3 linear = WideVector3.Scale(t1, d1);
+            linear.AddScaled(t2, d2);
+            WideVector3 angularA = WideVector3.Cross(w.CentroidA, linear);
+            WideVector3 angularB = WideVector3.Cross(w.CentroidB, linear);
+            Apply(linear, angularA, angularB, ref l);
 
             Vector<float> maxTwist = maxFriction * w.TwistRadius;
             WideVector3 dw = l.WB;
@@ -335,46 +409,68 @@ namespace Fulcrum.Dynamics
             Vector<float> oldTwist = w.TwistImpulse;
             Vector<float> twist = Vector.Min(Vector.Max(oldTwist - w.TwistMass * WideVector3.Dot(w.Normal, dw), -maxTwist), maxTwist);
             w.TwistImpulse = twist;
-            Vector<float> dt = twist - oldTwist;
-            l.WA.SubtractScaled(w.TwistVelocityA, dt);
-            l.WB.AddScaled(w.TwistVelocityB, dt);
+            WideVector3 spin = WideVector3.Scale(w.Normal, twist - oldTwist);
+            l.WA.Subtract(l.IA.Transform(spin));
+            l.WB.Add(l.IB.Transform(spin));
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
+        // TangentBasis.Build, lane-wise.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Terms(Vector<float> s, in WideContact w, Vector<float> inverseStep, Vector<float> maxPush, bool useBias,
-            out Vector<float> bias, out Vector<float> massScale, out Vector<float> impulseScale)
+        static void Tangents(in WideVector3 n, out WideVector3 t1, out WideVector3 t2)
+        {
+            Vector<float> sign = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(n.Z, Vector<float>.Zero), Vector<float>.One, new Vector<float>(-1f));
+            Vector<float> a = new Vector<float>(-1f) / (sign + n.Z);
+            Vector<float> b = n.X * n.Y * a;
+            t1 = new WideVector3 { X = Vector<float>.One + sign * n.X * n.X * a, Y = sign * b, Z = -sign * n.X };
+            t2 = new WideVector3 { X = b, Y = sign + n.Y * n.Y * a, Z = -n.Y };
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void RecordImpact(ref Vector<float> approach, Vector<int> first, int bit, Vector<float> vn)
+        {
+            var mask = Vector.Equals(Vector.BitwiseAnd(first, new Vector<int>(bit)), new Vector<int>(bit));
+            approach = Vector.ConditionalSelect(mask, Vector.Max(vn, approach), approach);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Terms(Vector<float> s, Vector<float> inverseStep, Vector<float> maxPush, Vector<float> rate, Vector<float> massScale,
+            Vector<float> impulseScale, bool useBias, out Vector<float> bias, out Vector<float> ms, out Vector<float> @is)
         {
             var speculative = Vector.GreaterThan(s, Vector<float>.Zero);
             if (useBias)
             {
-                bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector.Max(w.BiasRate * s, maxPush));
-                massScale = Vector.ConditionalSelect(speculative, Vector<float>.One, w.MassScale);
-                impulseScale = Vector.ConditionalSelect(speculative, Vector<float>.Zero, w.ImpulseScale);
+                bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector.Max(rate * s, maxPush));
+                ms = Vector.ConditionalSelect(speculative, Vector<float>.One, massScale);
+                @is = Vector.ConditionalSelect(speculative, Vector<float>.Zero, impulseScale);
             }
             else
             {
                 bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector<float>.Zero);
-                massScale = Vector<float>.One;
-                impulseScale = Vector<float>.Zero;
+                ms = Vector<float>.One;
+                @is = Vector<float>.Zero;
             }
         }
 
+        // The block pair of slots bit1/bit2: returns the lanes' bits of the slots that carry
+        // load for the first time in this step (and sets them in loaded).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void SolvePair(ref WideContact w, ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22,
-            Vector<float> drift, Vector<float> inverseStep, Vector<float> maxPush, bool useBias, ref Lanes l)
+        static Vector<int> SolvePair(ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22, int bit1, int bit2,
+            in WideVector3 n, Vector<float> drift, Vector<float> inverseStep, Vector<float> maxPush,
+            Vector<float> rate, Vector<float> massScale, Vector<float> impulseScale, bool useBias,
+            ref Vector<int> loaded, out Vector<float> vn1, out Vector<float> vn2, ref Lanes l)
         {
-            Vector<float> s1 = p1.Separation + drift + WideVector3.Dot(l.DThetaB, p1.Normal.AngularB) - WideVector3.Dot(l.DThetaA, p1.Normal.AngularA);
-            Vector<float> s2 = p2.Separation + drift + WideVector3.Dot(l.DThetaB, p2.Normal.AngularB) - WideVector3.Dot(l.DThetaA, p2.Normal.AngularA);
-            Terms(s1, w, inverseStep, maxPush, useBias, out Vector<float> bias1, out Vector<float> ms1, out Vector<float> is1);
-            Terms(s2, w, inverseStep, maxPush, useBias, out Vector<float> bias2, out Vector<float> ms2, out Vector<float> is2);
+            Vector<float> s1 = p1.Separation + drift + WideVector3.Dot(l.DThetaB, p1.AngularB) - WideVector3.Dot(l.DThetaA, p1.AngularA);
+            Vector<float> s2 = p2.Separation + drift + WideVector3.Dot(l.DThetaB, p2.AngularB) - WideVector3.Dot(l.DThetaA, p2.AngularA);
+            Terms(s1, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias1, out Vector<float> ms1, out Vector<float> is1);
+            Terms(s2, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias2, out Vector<float> ms2, out Vector<float> is2);
             Vector<float> zero = Vector<float>.Zero;
             Vector<float> gamma1 = Vector.ConditionalSelect(Vector.GreaterThan(is1, zero), k11 * is1 / ms1, zero);
             Vector<float> gamma2 = Vector.ConditionalSelect(Vector.GreaterThan(is2, zero), k22 * is2 / ms2, zero);
 
-            Vector<float> a1 = p1.Normal.Impulse, a2 = p2.Normal.Impulse;
-            Vector<float> vn1 = RowVelocity(p1.Normal, w.Normal, l);
-            Vector<float> vn2 = RowVelocity(p2.Normal, w.Normal, l);
+            Vector<float> a1 = p1.Impulse, a2 = p2.Impulse;
+            vn1 = RowVelocity(p1.AngularA, p1.AngularB, n, l);
+            vn2 = RowVelocity(p2.AngularA, p2.AngularB, n, l);
             Vector<float> A11 = k11 + gamma1, A22 = k22 + gamma2, A12 = k12;
             Vector<float> b1 = vn1 + bias1 - (k11 * a1 + k12 * a2);
             Vector<float> b2 = vn2 + bias2 - (k12 * a1 + k22 * a2);
@@ -401,87 +497,121 @@ namespace Fulcrum.Dynamics
             x2 = Vector.ConditionalSelect(ok1, c1x2, x2);
 
             Vector<float> d1 = x1 - a1, d2 = x2 - a2;
-            p1.Normal.Impulse = x1;
-            p2.Normal.Impulse = x2;
-            // The approach speed of the (sub)step a point first carries load (RecordImpact).
-            var first1 = Vector.BitwiseAnd(Vector.GreaterThan(x1, p1.MaxNormalImpulse), Vector.Equals(p1.MaxNormalImpulse, zero));
-            var first2 = Vector.BitwiseAnd(Vector.GreaterThan(x2, p2.MaxNormalImpulse), Vector.Equals(p2.MaxNormalImpulse, zero));
-            p1.RelativeVelocity = Vector.ConditionalSelect(first1, Vector.Max(vn1, p1.RelativeVelocity), p1.RelativeVelocity);
-            p2.RelativeVelocity = Vector.ConditionalSelect(first2, Vector.Max(vn2, p2.RelativeVelocity), p2.RelativeVelocity);
-            p1.MaxNormalImpulse = Vector.Max(p1.MaxNormalImpulse, x1);
-            p2.MaxNormalImpulse = Vector.Max(p2.MaxNormalImpulse, x2);
-            ApplyNormal(w, p1.Normal, d1, ref l);
-            ApplyNormal(w, p2.Normal, d2, ref l);
+            p1.Impulse = x1;
+            p2.Impulse = x2;
+            var pressed = Vector.BitwiseOr(Vector.BitwiseAnd(Vector.GreaterThan(x1, zero), new Vector<int>(bit1)),
+                Vector.BitwiseAnd(Vector.GreaterThan(x2, zero), new Vector<int>(bit2)));
+            Vector<int> first = Vector.AndNot(pressed, loaded);
+            loaded = Vector.BitwiseOr(loaded, pressed);
+
+            WideVector3 linear = WideVector3.Scale(n, d1 + d2);
+            WideVector3 angularA = WideVector3.Scale(p1.AngularA, d1);
+            angularA.AddScaled(p2.AngularA, d2);
+            WideVector3 angularB = WideVector3.Scale(p1.AngularB, d1);
+            angularB.AddScaled(p2.AngularB, d2);
+            Apply(linear, angularA, angularB, ref l);
+            return first;
         }
 
-        /// <summary>ContactSolver.RefreshApproach for a group.</summary>
-        public static void RefreshApproach(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void RefreshApproach(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset)
         {
-            if (Vector.EqualsAll(w.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, false);
-            Refresh(w, ref w.P0, l);
-            Refresh(w, ref w.P1, l);
-            Refresh(w, ref w.P2, l);
-            Refresh(w, ref w.P3, l);
+            if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
+            Gather(bodies, laneBodies, groupOffset, out Lanes l, false, false);
+            Refresh(w.P0, ref impact.P0, w.Loaded, 1, w.Normal, l);
+            Refresh(w.P1, ref impact.P1, w.Loaded, 2, w.Normal, l);
+            Refresh(w.P2, ref impact.P2, w.Loaded, 4, w.Normal, l);
+            Refresh(w.P3, ref impact.P3, w.Loaded, 8, w.Normal, l);
         }
 
-        static void Refresh(in WideContact w, ref WidePoint p, in Lanes l)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static Vector<int> IsLoaded(Vector<int> loaded, int bit) => Vector.Equals(Vector.BitwiseAnd(loaded, new Vector<int>(bit)), new Vector<int>(bit));
+
+        static void Refresh(in WidePoint p, ref WideImpactPoint i, Vector<int> loaded, int bit, in WideVector3 n, in Lanes l)
         {
-            var untouched = Vector.Equals(p.MaxNormalImpulse, Vector<float>.Zero);
-            p.RelativeVelocity = Vector.ConditionalSelect(untouched, RowVelocity(p.Normal, w.Normal, l), p.RelativeVelocity);
+            i.RelativeVelocity = Vector.ConditionalSelect(IsLoaded(loaded, bit), i.RelativeVelocity, RowVelocity(p.AngularA, p.AngularB, n, l));
         }
 
-        /// <summary>The restitution pass of a group.</summary>
-        public static void ApplyRestitution(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold)
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void ApplyRestitution(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold)
         {
-            if (Vector.EqualsAll(w.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, false);
+            if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
+            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, false);
             var limit = new Vector<float>(-threshold);
-            Restitute(ref w, ref w.P0, limit, ref l);
-            Restitute(ref w, ref w.P1, limit, ref l);
-            Restitute(ref w, ref w.P2, limit, ref l);
-            Restitute(ref w, ref w.P3, limit, ref l);
+            Restitute(ref w.P0, impact.P0, impact.Restitution, w.Loaded, 1, w.Normal, limit, ref l);
+            Restitute(ref w.P1, impact.P1, impact.Restitution, w.Loaded, 2, w.Normal, limit, ref l);
+            Restitute(ref w.P2, impact.P2, impact.Restitution, w.Loaded, 4, w.Normal, limit, ref l);
+            Restitute(ref w.P3, impact.P3, impact.Restitution, w.Loaded, 8, w.Normal, limit, ref l);
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
-        static void Restitute(ref WideContact w, ref WidePoint p, Vector<float> limit, ref Lanes l)
+        static void Restitute(ref WidePoint p, in WideImpactPoint i, Vector<float> e, Vector<int> loaded, int bit, in WideVector3 n,
+            Vector<float> limit, ref Lanes l)
         {
             Vector<float> zero = Vector<float>.Zero;
-            // As ContactSolver.ApplyRestitution: impacts of this substep only (nothing applied before).
-            var active = Vector.BitwiseAnd(Vector.BitwiseAnd(Vector.LessThanOrEqual(p.RelativeVelocity, limit), Vector.Equals(p.Applied, zero)),
-                Vector.BitwiseAnd(Vector.GreaterThan(p.MaxNormalImpulse, zero), Vector.GreaterThan(w.Restitution, zero)));
+            // As ContactSolver.ApplyRestitution: impacts of this substep only (nothing applied
+            // before). A restitution impulse is never negative, so the point stays loaded.
+            var active = Vector.BitwiseAnd(Vector.BitwiseAnd(Vector.LessThanOrEqual(i.RelativeVelocity, limit), Vector.Equals(i.Applied, zero)),
+                Vector.BitwiseAnd(IsLoaded(loaded, bit), Vector.GreaterThan(e, zero)));
             if (Vector.EqualsAll(active, Vector<int>.Zero)) return;
-            Vector<float> vn = RowVelocity(p.Normal, w.Normal, l);
-            Vector<float> old = p.Normal.Impulse;
-            Vector<float> total = Vector.Max(old - p.Normal.EffectiveMass * (vn + w.Restitution * p.RelativeVelocity), zero);
+            Vector<float> vn = RowVelocity(p.AngularA, p.AngularB, n, l);
+            Vector<float> old = p.Impulse;
+            Vector<float> total = Vector.Max(old - i.EffectiveMass * (vn + e * i.RelativeVelocity), zero);
             total = Vector.ConditionalSelect(active, total, old);
-            p.Normal.Impulse = total;
-            p.MaxNormalImpulse = Vector.Max(p.MaxNormalImpulse, total);
-            ApplyNormal(w, p.Normal, total - old, ref l);
+            p.Impulse = total;
+            Vector<float> d = total - old;
+            Apply(WideVector3.Scale(n, d), WideVector3.Scale(p.AngularA, d), WideVector3.Scale(p.AngularB, d), ref l);
         }
 
-        /// <summary>Writes a group's impulses back into its manifolds (per step: times <paramref name="scale"/>).</summary>
-        public static void Store(in WideContact w, int[] laneSlots, int groupOffset, ReadOnlySpan<int> source, ContactConstraint[] contacts,
-            ContactConstraintPoint[] points, ContactManifold[] manifolds, float scale)
+        /// <summary>What a substep applied: the point slots' impulses now (see SolverContext.AccumulateApplied).</summary>
+        public static void Accumulate(in WideContact w, ref WideImpact impact)
         {
-            for (int lane = 0; lane < source.Length; lane++)
+            Accumulate(w.P0.Impulse, ref impact.P0);
+            Accumulate(w.P1.Impulse, ref impact.P1);
+            Accumulate(w.P2.Impulse, ref impact.P2);
+            Accumulate(w.P3.Impulse, ref impact.P3);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Accumulate(Vector<float> impulse, ref WideImpactPoint i)
+        {
+            i.Applied += impulse;
+            i.LastSubstep = impulse;
+        }
+
+        /// <summary>
+        /// Writes a group's impulses back into its manifolds (per step: times <paramref name="scale"/>);
+        /// <paramref name="laneManifolds"/> names each lane's manifold (-1: none).
+        /// </summary>
+        public static void Store(in WideContact w, in WideImpact impact, int[] laneSlots, int[] laneManifolds, int groupOffset,
+            ContactManifold[] manifolds, float scale)
+        {
+            int width = Width;
+            float share = scale / 4f;
+            for (int lane = 0; lane < width; lane++)
             {
-                ref ContactConstraint c = ref contacts[source[lane]];
-                ref ContactManifold m = ref manifolds[c.Manifold];
-                float share = scale / 4f;
-                float f1 = w.Friction1.Impulse.GetElement(lane), f2 = w.Friction2.Impulse.GetElement(lane);
-                for (int k = 0; k < 4; k++)
-                {
-                    ref readonly WidePoint wp = ref k == 0 ? ref w.P0 : ref k == 1 ? ref w.P1 : ref k == 2 ? ref w.P2 : ref w.P3;
-                    ref ContactPoint mp = ref ContactManifold.Point(ref m, points[laneSlots[4 * (groupOffset + lane) + k]].ManifoldPoint);
-                    mp.NormalImpulse = scale * wp.Normal.Impulse.GetElement(lane);
-                    mp.AppliedImpulse = wp.Applied.GetElement(lane) + wp.Normal.Impulse.GetElement(lane) - wp.LastSubstep.GetElement(lane);
-                    mp.TangentImpulse1 = share * f1;
-                    mp.TangentImpulse2 = share * f2;
-                    mp.RelativeNormalVelocity = wp.RelativeVelocity.GetElement(lane);
-                }
-                m.RollingImpulse = scale * w.TwistImpulse.GetElement(lane) * c.Normal;
+                int at = groupOffset + lane;
+                int mi = laneManifolds[at];
+                if (mi < 0) continue;
+                ref ContactManifold m = ref manifolds[mi];
+                float f1 = w.FrictionImpulse1.GetElement(lane), f2 = w.FrictionImpulse2.GetElement(lane);
+                StorePoint(ref ContactManifold.Point(ref m, laneSlots[4 * at]), w.P0, impact.P0, lane, scale, share, f1, f2);
+                StorePoint(ref ContactManifold.Point(ref m, laneSlots[4 * at + 1]), w.P1, impact.P1, lane, scale, share, f1, f2);
+                StorePoint(ref ContactManifold.Point(ref m, laneSlots[4 * at + 2]), w.P2, impact.P2, lane, scale, share, f1, f2);
+                StorePoint(ref ContactManifold.Point(ref m, laneSlots[4 * at + 3]), w.P3, impact.P3, lane, scale, share, f1, f2);
+                m.RollingImpulse = scale * w.TwistImpulse.GetElement(lane) * w.Normal.Get(lane);
             }
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void StorePoint(ref ContactPoint mp, in WidePoint p, in WideImpactPoint i, int lane, float scale, float share, float f1, float f2)
+        {
+            float impulse = p.Impulse.GetElement(lane);
+            mp.NormalImpulse = scale * impulse;
+            mp.AppliedImpulse = i.Applied.GetElement(lane) + impulse - i.LastSubstep.GetElement(lane);
+            mp.TangentImpulse1 = share * f1;
+            mp.TangentImpulse2 = share * f2;
+            mp.RelativeNormalVelocity = i.RelativeVelocity.GetElement(lane);
         }
     }
 }

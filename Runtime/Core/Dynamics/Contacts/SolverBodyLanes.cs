@@ -21,7 +21,7 @@ namespace Fulcrum.Dynamics
 
         // Float offsets inside SolverBody (see its layout): LinearVelocity, AngularVelocity,
         // the block whose last three floats are DeltaPosition, DeltaRotation.
-        public const int Linear = 0, Angular = 4, Displacement = 16, Rotation = 20;
+        public const int Linear = 0, Angular = 4, Inertia = 8, Displacement = 16, Rotation = 20;
 
         /// <summary>The first float of the solver body that <paramref name="laneBodies"/>[<paramref name="at"/>] names.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -16,6 +16,14 @@ namespace Fulcrum.Dynamics
         public static Vector<float> Dot(in WideVector3 a, in WideVector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static WideVector3 Cross(in WideVector3 a, in WideVector3 b) => new WideVector3
+        {
+            X = a.Y * b.Z - a.Z * b.Y,
+            Y = a.Z * b.X - a.X * b.Z,
+            Z = a.X * b.Y - a.Y * b.X,
+        };
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static WideVector3 Scale(in WideVector3 a, Vector<float> s) => new WideVector3 { X = a.X * s, Y = a.Y * s, Z = a.Z * s };
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

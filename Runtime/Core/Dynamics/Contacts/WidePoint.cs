@@ -1,0 +1,17 @@
+#if NET
+using System.Numerics;
+
+namespace Fulcrum.Dynamics
+{
+    /// <summary>One point slot of a <see cref="WideContact"/>: its normal row's angular Jacobians, separation and impulse.</summary>
+    internal struct WidePoint
+    {
+        /// <summary>rA x n and rB x n.</summary>
+        public WideVector3 AngularA, AngularB;
+        /// <summary>Separation at the start of the step, m.</summary>
+        public Vector<float> Separation;
+        /// <summary>Accumulated normal impulse, N s.</summary>
+        public Vector<float> Impulse;
+    }
+}
+#endif
