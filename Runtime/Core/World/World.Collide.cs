@@ -155,6 +155,7 @@ namespace Fulcrum
             _sortCount = 0;
             _stepTouching = 0;
             _stepMaxPenetration = 0;
+            _reuseCosHalfAngle = MathF.Cos(0.5f * _settings.ManifoldReuseAngle);
             ContactGraph g = ContactGraph;
             bool parallel = _settings.Threads > 1 && CollideInParallel(dt);
             int k = 0;

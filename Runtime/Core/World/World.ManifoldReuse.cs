@@ -29,17 +29,19 @@ namespace Fulcrum
             float d = _settings.ManifoldReuseDistance;
             if (Vector3.DistanceSquared(position, ct.ReusePosition) > d * d) return false;
             // |cos(half the angle between the two relative rotations)|.
-            float cosHalf = MathF.Abs(Quaternion.Dot(rotation, ct.ReuseRotation));
-            return cosHalf >= MathF.Cos(0.5f * _settings.ManifoldReuseAngle);
+            return MathF.Abs(Quaternion.Dot(rotation, ct.ReuseRotation)) >= _reuseCosHalfAngle;
         }
 
         bool ManifoldReuseEnabled => _settings.ManifoldReuseDistance > 0 && _settings.ManifoldReuseAngle > 0;
+
+        // cos(ManifoldReuseAngle / 2), refreshed at the start of each narrow phase.
+        float _reuseCosHalfAngle = 1;
 
         static void RelativePose(in Pose a, in Pose b, out Vector3 position, out Quaternion rotation)
         {
             Quaternion inverseA = Quaternion.Conjugate(a.Rotation);
             position = Vector3.Transform(b.Position - a.Position, inverseA);
-            rotation = Quaternion.Normalize(inverseA * b.Rotation);
+            rotation = inverseA * b.Rotation;
         }
 
         // Stores the manifolds just written by WriteManifolds in the shapes' frames.
