@@ -34,11 +34,13 @@ namespace Fulcrum.Benchmarks
             Row(output, "pyramid", SolverType.Tgs, "SIMD path off", 1, w => Pyramid(w, pyramidBase), s => s.Scalar = true, warm, measured);
             Row(output, "pyramid", SolverType.Tgs, "warm start off", 1, w => Pyramid(w, pyramidBase), s => s.WarmStarting = false, warm, measured);
             Row(output, "pyramid", SolverType.Tgs, "block off", 1, w => Pyramid(w, pyramidBase), s => s.BlockSolver = false, warm, measured);
+            Row(output, "pyramid", SolverType.Tgs, "manifold reuse off", 1, w => Pyramid(w, pyramidBase), s => s.ManifoldReuse = false, warm, measured);
             Row(output, "pyramid", SolverType.Pgs, "default (4 it, 2 pos)", 1, w => Pyramid(w, pyramidBase), s => { }, warm, measured);
             Row(output, "pyramid", SolverType.Pgs, "warm start off", 1, w => Pyramid(w, pyramidBase), s => s.WarmStarting = false, warm, measured);
             Row(output, "pile", SolverType.Tgs, "default (4x4, block)", 1, w => Pile(w, pile), s => { }, warm, measured);
             Row(output, "pile", SolverType.Tgs, "default (4x4, block)", all, w => Pile(w, pile), s => { }, warm, measured);
             Row(output, "pile", SolverType.Tgs, "SIMD path off", 1, w => Pile(w, pile), s => s.Scalar = true, warm, measured);
+            Row(output, "pile", SolverType.Tgs, "manifold reuse off", 1, w => Pile(w, pile), s => s.ManifoldReuse = false, warm, measured);
             Row(output, "pile", SolverType.Pgs, "default (4 it, 2 pos)", 1, w => Pile(w, pile), s => { }, warm, measured);
             Row(output, "tower 40", SolverType.Tgs, "default (4x4, block)", 1, w => Tower(w, 40), s => { }, warm, measured);
             Row(output, "tower 40", SolverType.Pgs, "default (4 it, 2 pos)", 1, w => Tower(w, 40), s => { }, warm, measured);
@@ -78,6 +80,7 @@ namespace Fulcrum.Benchmarks
             public WorldSettings Settings;
             public bool WarmStarting { set => Settings.WarmStarting = value; }
             public bool BlockSolver { set => Settings.BlockSolver = value; }
+            public bool ManifoldReuse { set => Settings.ManifoldReuseDistance = value ? WorldSettings.Default.ManifoldReuseDistance : 0; }
             public bool Scalar;
         }
 

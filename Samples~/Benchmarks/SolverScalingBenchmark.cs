@@ -20,7 +20,7 @@ namespace Fulcrum.Benchmarks
 
         public string Name => "scaling";
 
-        public string Description => "ms/step of 5k-8k box scenes, pile and ragdolls: TGS 1/all threads, PGS, warm start off, bytes/step, growth with body count";
+        public string Description => "ms/step of 5k-8k box scenes, pile and ragdolls: TGS 1/all threads, PGS, warm start off, manifold reuse off, bytes/step, growth with body count";
 
         public void Run(TextWriter output, bool quick)
         {
@@ -70,14 +70,16 @@ namespace Fulcrum.Benchmarks
             Row(output, w, name, bodies, joints, "TGS", SolverType.Tgs, true, all, rewarm, measured);
             Row(output, w, name, bodies, joints, "PGS", SolverType.Pgs, true, 1, rewarm, measured);
             Row(output, w, name, bodies, joints, "TGS warm start off", SolverType.Tgs, false, 1, rewarm, measured);
+            Row(output, w, name, bodies, joints, "TGS manifold reuse off", SolverType.Tgs, true, 1, rewarm, measured, reuse: false);
         }
 
         static void Row(TextWriter output, World w, string name, int bodies, int joints, string label,
-            SolverType solver, bool warmStarting, int threads, int rewarm, int measured)
+            SolverType solver, bool warmStarting, int threads, int rewarm, int measured, bool reuse = true)
         {
             WorldSettings s = w.Settings;
             s.Solver = solver;
             s.WarmStarting = warmStarting;
+            s.ManifoldReuseDistance = reuse ? WorldSettings.Default.ManifoldReuseDistance : 0;
             s.Threads = threads;
             w.Settings = s;
             for (int n = 0; n < rewarm; n++) w.Step(Dt);

@@ -10,7 +10,7 @@ namespace Fulcrum.Tests.Scenes
         const string Stiff = """
         {
           "format": "fulcrum-scene/1",
-          "solver": { "type": "tgs", "iterations": 2, "substeps": 8, "contactHertz": 90, "jointHertz": 500 },
+          "solver": { "type": "tgs", "iterations": 2, "substeps": 8, "contactHertz": 90, "jointHertz": 500, "manifoldReuse": 0.0005 },
           "bodies": [ { "name": "ball", "shape": { "type": "sphere", "radius": 0.5 }, "position": [0, 5, 0] } ]
         }
         """;
@@ -32,6 +32,7 @@ namespace Fulcrum.Tests.Scenes
             SceneInstance scene = SceneBuilder.Build(doc);
             Assert.That(scene.World.Settings.ContactHertz, Is.EqualTo(90f));
             Assert.That(scene.World.Settings.JointHertz, Is.EqualTo(500f));
+            Assert.That(scene.World.Settings.ManifoldReuseDistance, Is.EqualTo(0.0005f));
             Assert.That(SceneDifference.Find(doc, SceneFile.Parse(SceneFile.Save(doc))), Is.Null);
             Assert.That(SceneFile.Save(SceneFile.Parse(SceneSamples.OneBall())), Does.Not.Contain("Hertz"), "absent fields stay absent");
         }
@@ -41,6 +42,15 @@ namespace Fulcrum.Tests.Scenes
         {
             var e = Assert.Throws<SceneException>(() => SceneFile.Parse(Stiff.Replace("\"jointHertz\": 500", "\"jointHertz\": 0")))!;
             Assert.That(e.Errors[0].Path, Is.EqualTo("$.solver.jointHertz"));
+        }
+
+        [Test]
+        public void A_negative_manifold_reuse_distance_names_its_path()
+        {
+            var e = Assert.Throws<SceneException>(() => SceneFile.Parse(Stiff.Replace("\"manifoldReuse\": 0.0005", "\"manifoldReuse\": -1")))!;
+            Assert.That(e.Errors[0].Path, Is.EqualTo("$.solver.manifoldReuse"));
+            Assert.That(SceneBuilder.Build(SceneFile.Parse(SceneSamples.OneBall())).World.Settings.ManifoldReuseDistance,
+                Is.EqualTo(WorldSettings.Default.ManifoldReuseDistance), "absent: the default");
         }
 
         [Test]

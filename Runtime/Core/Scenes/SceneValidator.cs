@@ -67,6 +67,7 @@ namespace Fulcrum.Scenes
                     AtLeast(doc.Solver.Substeps, 1, P(solver, "substeps"));
                     if (doc.Solver.ContactHertz is float contactHertz) Positive(contactHertz, P(solver, "contactHertz"));
                     if (doc.Solver.JointHertz is float jointHertz) Positive(jointHertz, P(solver, "jointHertz"));
+                    if (doc.Solver.ManifoldReuse is float reuse) NonNegative(reuse, P(solver, "manifoldReuse"));
                 }
                 Materials();
                 for (int i = 0; i < doc.Bodies.Count; i++) Body(doc.Bodies[i], JsonPath.Index("$.bodies", i));

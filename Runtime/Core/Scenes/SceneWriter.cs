@@ -26,6 +26,7 @@ namespace Fulcrum.Scenes
                 .Add("substeps", doc.Solver.Substeps);
             if (doc.Solver.ContactHertz is float contactHertz) solver.Add("contactHertz", contactHertz);
             if (doc.Solver.JointHertz is float jointHertz) solver.Add("jointHertz", jointHertz);
+            if (doc.Solver.ManifoldReuse is float reuse) solver.Add("manifoldReuse", reuse);
             o.Add("solver", solver.Value);
             if (doc.Materials.Count > 0)
             {

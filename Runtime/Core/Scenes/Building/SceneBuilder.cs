@@ -29,6 +29,7 @@ namespace Fulcrum.Scenes
             settings.Substeps = document.Solver.Substeps;
             if (document.Solver.ContactHertz is float contactHertz) settings.ContactHertz = contactHertz;
             if (document.Solver.JointHertz is float jointHertz) settings.JointHertz = jointHertz;
+            if (document.Solver.ManifoldReuse is float reuse) settings.ManifoldReuseDistance = reuse;
 
             SceneExpansion e = document.Expand();
             // Every geometry first: an unsupported shape fails before a world exists.

@@ -23,5 +23,11 @@ namespace Fulcrum.Scenes
         /// extension; heavy loads on light chains want more). Null: the WorldSettings default.
         /// </summary>
         public float? JointHertz { get; set; }
+        /// <summary>
+        /// <c>manifoldReuse</c>: the relative motion, m, below which a touching pair keeps its
+        /// manifold instead of colliding again (<see cref="WorldSettings.ManifoldReuseDistance"/>;
+        /// an extension), &gt;= 0; 0 turns reuse off. Null: the WorldSettings default (1 mm).
+        /// </summary>
+        public float? ManifoldReuse { get; set; }
     }
 }

@@ -46,6 +46,7 @@ namespace Fulcrum.Scenes
             s.Substeps = r.Int("substeps", s.Substeps);
             s.ContactHertz = r.OptionalFloat("contactHertz");
             s.JointHertz = r.OptionalFloat("jointHertz");
+            s.ManifoldReuse = r.OptionalFloat("manifoldReuse");
             r.Finish();
             return s;
         }
