@@ -124,6 +124,25 @@ namespace Fulcrum.Tests.Collision
             Assert.That(w.MaxPenetration, Is.LessThan(0.02f));
         }
 
+        [TestCase(0.1f, 1)]
+        [TestCase(2f, 0)]
+        public void A_small_turn_is_reused_only_while_the_shapes_far_points_stay_within_half_the_margin(float halfLength, int reused)
+        {
+            // A bar lying on the ground, turned 1 degree about its centre (within the 2 degree
+            // limit): a 0.2 m bar's ends move 3.5 mm (reused), a 4 m bar's 35 mm (computed again).
+            World w = MakeWorld(0.001f, gravity: false);
+            Box(w, new Vector3(0, -0.5f, 0), new Vector3(10, 0.5f, 10), BodyType.Static);
+            BodyHandle bar = Box(w, new Vector3(0, 0.049f, 0), new Vector3(halfLength, 0.05f, 0.05f));
+            for (int n = 0; n < 3; n++) w.Step(1 / 60f);
+            Assert.That(w.ReusedManifoldPairCount, Is.EqualTo(1));
+            var b = w.GetBody(bar);
+            b.Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitY, MathF.PI / 180f) * b.Rotation;
+            b.LinearVelocity = Vector3.Zero;
+            b.AngularVelocity = Vector3.Zero;
+            w.Step(1 / 60f);
+            Assert.That(w.ReusedManifoldPairCount, Is.EqualTo(reused));
+        }
+
         [Test]
         public void Reuse_settings_are_checked()
         {

@@ -17,5 +17,7 @@ namespace Fulcrum.Collision
         Overlapping = 8,
         /// <summary>The manifolds' points are stored in the shapes' frames and may be reused (see World.ManifoldReuse).</summary>
         Reusable = 16,
+        /// <summary>Manifold reuse tracks A's pose in B's frame (B is the larger shape), not B's in A's.</summary>
+        ReuseFromB = 32,
     }
 }

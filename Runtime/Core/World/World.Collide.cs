@@ -30,6 +30,9 @@ namespace Fulcrum
         // Per shape slot: how far the shape can move in this step (refreshed for awake moving
         // shapes by the broad phase; 0 for static ones), and the step its fat box last changed.
         float[] _shapeMotion = Array.Empty<float>();
+        // Per shape slot: the farthest its geometry reaches from its own origin (manifold reuse
+        // bounds how far a rotation can move a shape's points with it).
+        float[] _shapeRadius = Array.Empty<float>();
         long[] _fatBoxStep = Array.Empty<long>();
         // Parallel narrow phase (Settings.Threads > 1): the candidates' pair functions run on
         // the worker pool first; per contact slot, the candidate index + 1 (0: none).
@@ -50,9 +53,12 @@ namespace Fulcrum
             {
                 int n = Math.Max(Shapes.SlotCount, 2 * _shapeMotion.Length);
                 Array.Resize(ref _shapeMotion, n);
+                Array.Resize(ref _shapeRadius, n);
                 Array.Resize(ref _fatBoxStep, n);
             }
             _shapeMotion[shape] = 0;
+            Aabb local = Shapes.Geometry[shape].ComputeAabb(Pose.Identity);
+            _shapeRadius[shape] = local.Center.Length() + local.Extents.Length();
             _fatBoxStep[shape] = _stepIndex;
             int b = Shapes.Body[shape];
             bool isStatic = Bodies.Type[b] == BodyType.Static;

@@ -25,11 +25,25 @@ namespace Fulcrum
             // point dropped then could be needed now only if the bound grew. A tenth of the
             // base margin of growth cannot make a dropped point (gap > base) close in this step.
             if (speculative > ct.ReuseSpeculative + 0.1f * SpeculativeBase) return false;
-            RelativePose(poseA, poseB, out Vector3 position, out Quaternion rotation);
+            bool fromB = (ct.Flags & ContactFlags.ReuseFromB) != 0;
+            Vector3 position;
+            Quaternion rotation;
+            if (fromB) RelativePose(poseB, poseA, out position, out rotation);
+            else RelativePose(poseA, poseB, out position, out rotation);
             float d = _settings.ManifoldReuseDistance;
-            if (Vector3.DistanceSquared(position, ct.ReusePosition) > d * d) return false;
+            float moved = Vector3.DistanceSquared(position, ct.ReusePosition);
+            if (moved > d * d) return false;
             // |cos(half the angle between the two relative rotations)|.
-            return MathF.Abs(Quaternion.Dot(rotation, ct.ReuseRotation)) >= _reuseCosHalfAngle;
+            float cosHalf = MathF.Abs(Quaternion.Dot(rotation, ct.ReuseRotation));
+            if (cosHalf < _reuseCosHalfAngle) return false;
+            // Whatever the angle allows, the smaller shape's farthest point (the chord 2 R
+            // sin(angle / 2)) plus the shift must stay within half the speculative margin: a
+            // corner that was beyond the margin when the manifold was made, and so is not in
+            // it, cannot have come down to touch (a long plank tilting 2 degrees would swing
+            // its far end 14 cm).
+            float sinHalf = MathF.Sqrt(MathF.Max(0f, 1f - cosHalf * cosHalf));
+            float radius = fromB ? _shapeRadius[ct.ShapeA] : _shapeRadius[ct.ShapeB];
+            return MathF.Sqrt(moved) + 2f * radius * sinHalf <= 0.5f * SpeculativeBase;
         }
 
         bool ManifoldReuseEnabled => _settings.ManifoldReuseDistance > 0 && _settings.ManifoldReuseAngle > 0;
@@ -74,9 +88,14 @@ namespace Fulcrum
                     g.SeparationOffset[4 * m + i] = cp.Separation - carried;
                 }
             }
-            RelativePose(poseA, poseB, out ct.ReusePosition, out ct.ReuseRotation);
+            // Track the smaller shape in the larger one's frame: a rotation then moves the
+            // points that matter by at most the smaller radius times the angle.
+            bool fromB = _shapeRadius[ct.ShapeA] < _shapeRadius[ct.ShapeB];
+            if (fromB) RelativePose(poseB, poseA, out ct.ReusePosition, out ct.ReuseRotation);
+            else RelativePose(poseA, poseB, out ct.ReusePosition, out ct.ReuseRotation);
             ct.ReuseSpeculative = speculative;
-            ct.Flags |= ContactFlags.Reusable;
+            ct.Flags = fromB ? ct.Flags | ContactFlags.Reusable | ContactFlags.ReuseFromB
+                : (ct.Flags | ContactFlags.Reusable) & ~ContactFlags.ReuseFromB;
         }
 
         // Moves the stored points with the shapes' current poses and rewrites every point's
