@@ -47,5 +47,30 @@ namespace Fulcrum.Tests.Collision
                 Assert.That(Array.TrueForAll(seen, x => x), Is.True, "a permutation");
             }
         }
+
+        [Test]
+        public void Key_order_reuses_last_order_only_for_the_same_arrivals()
+        {
+            var order = new KeyOrder();
+            ulong[] keys = { 50, 10, 40, 20 };
+            int[] items = { 5, 1, 4, 2 };
+            order.Sort(keys, items, 4);
+            Assert.That(items, Is.EqualTo(new[] { 1, 2, 4, 5 }));
+            // The same arrivals again: the remembered order.
+            keys = new ulong[] { 50, 10, 40, 20 };
+            items = new[] { 5, 1, 4, 2 };
+            order.Sort(keys, items, 4);
+            Assert.That(items, Is.EqualTo(new[] { 1, 2, 4, 5 }));
+            // The same keys for different items (a contact re-created in another slot): sorted afresh.
+            keys = new ulong[] { 50, 10, 40, 20 };
+            items = new[] { 7, 1, 4, 2 };
+            order.Sort(keys, items, 4);
+            Assert.That(items, Is.EqualTo(new[] { 1, 2, 4, 7 }));
+            // A new key: sorted afresh.
+            keys = new ulong[] { 50, 10, 30, 20 };
+            items = new[] { 7, 1, 3, 2 };
+            order.Sort(keys, items, 4);
+            Assert.That(items, Is.EqualTo(new[] { 1, 2, 3, 7 }));
+        }
     }
 }

@@ -17,11 +17,7 @@ namespace Fulcrum
         ulong[] _sortKeys = new ulong[64];
         int[] _sortItems = new int[64];
         int _sortCount;
-        // Last step's contacts in arrival order and in key order: the same arrivals (the usual
-        // case, nothing began or ended) take the same order without sorting again.
-        int[] _lastArrival = new int[64];
-        int[] _lastSorted = new int[64];
-        int _lastSortCount = -1;
+        readonly KeyOrder _contactOrder = new KeyOrder();
         // Touching points and deepest penetration of this step's listed manifolds, measured
         // where each manifold is written (its points are in cache there).
         int _stepTouching;
@@ -476,7 +472,7 @@ namespace Fulcrum
         {
             ContactGraph g = ContactGraph;
             int n = _sortCount;
-            OrderByKey(n);
+            _contactOrder.Sort(_sortKeys, _sortItems, n);
             for (int k = 0; k < n; k++)
             {
                 ref Contact ct = ref g.Contacts[_sortItems[k]];
@@ -488,31 +484,5 @@ namespace Fulcrum
             if (_stepMaxPenetration > StatMaxPenetration) StatMaxPenetration = _stepMaxPenetration;
         }
 
-        // Sorts _sortItems[0, n) by pair key, reusing last step's order when the same contacts
-        // arrived in the same order (pair keys are unique, so the order is the same).
-        void OrderByKey(int n)
-        {
-            if (n == _lastSortCount && new ReadOnlySpan<int>(_sortItems, 0, n).SequenceEqual(new ReadOnlySpan<int>(_lastArrival, 0, n)))
-            {
-                Array.Copy(_lastSorted, _sortItems, n);
-                return;
-            }
-            if (_lastArrival.Length < n)
-            {
-                _lastArrival = new int[_sortItems.Length];
-                _lastSorted = new int[_sortItems.Length];
-            }
-            Array.Copy(_sortItems, _lastArrival, n);
-            if (n > 1 && !IsSorted(_sortKeys, n)) PairKeySort.Sort(_sortKeys, _sortItems, n);
-            Array.Copy(_sortItems, _lastSorted, n);
-            _lastSortCount = n;
-        }
-
-        static bool IsSorted(ulong[] keys, int n)
-        {
-            for (int k = 1; k < n; k++)
-                if (keys[k] < keys[k - 1]) return false;
-            return true;
-        }
     }
 }

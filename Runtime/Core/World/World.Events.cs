@@ -17,6 +17,7 @@ namespace Fulcrum
         ulong[] _stepEventKeys = new ulong[16];
         int[] _stepEventOrder = new int[16];
         int _stepEventCount;
+        readonly KeyOrder _eventOrder = new KeyOrder();
 
         /// <summary>
         /// The contact and sensor events of the last step: begin, persist (every step a pair
@@ -55,7 +56,7 @@ namespace Fulcrum
 
             int n = _stepEventCount;
             for (int i = 0; i < n; i++) _stepEventOrder[i] = i;
-            if (n > 1) PairKeySort.Sort(_stepEventKeys, _stepEventOrder, n);
+            _eventOrder.Sort(_stepEventKeys, _stepEventOrder, n);
             for (int i = 0; i < n; i++) AppendEvent(_stepEvents[_stepEventOrder[i]]);
             _stepEventCount = 0;
         }
