@@ -25,8 +25,10 @@ namespace Fulcrum.Benchmarks
             output.WriteLine($"1 thread: WorldSettings.Threads = 1; all cores: Threads = {cores} (the narrow phase's pair functions");
             output.WriteLine("and the solver run on the worker pool; the results are bit-identical). Bytes/step: the stepping thread.");
             output.WriteLine();
-            output.WriteLine($"| pile | bodies | touching points (manifolds) | broad ms, 1 thread | narrow ms, 1 thread | collide ms, 1 thread | broad ms, {cores} threads | narrow ms, {cores} threads | collide ms, {cores} threads | bytes/step (1 / {cores}) |");
-            output.WriteLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+            output.WriteLine("Manifold reuse off: WorldSettings.ManifoldReuseDistance = 0 (every touching pair runs its pair function every step).");
+            output.WriteLine();
+            output.WriteLine($"| pile | bodies | touching points (manifolds) | broad ms, 1 thread | narrow ms, 1 thread | collide ms, 1 thread | narrow ms, 1 thread, reuse off | broad ms, {cores} threads | narrow ms, {cores} threads | collide ms, {cores} threads | bytes/step (1 / {cores}) |");
+            output.WriteLine("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
             int[] sizes = quick ? new[] { 1000, 4000 } : new[] { 1000, 4000, 16000 };
             foreach (int n in sizes) PileRow(output, $"boxes {n / 1000}k", n, mixed: false, steps: quick ? 20 : 40);
             PileRow(output, "mixed 4k", 4000, mixed: true, steps: quick ? 20 : 40);
@@ -46,15 +48,22 @@ namespace Fulcrum.Benchmarks
         static void PileRow(TextWriter output, string name, int count, bool mixed, int steps)
         {
             var one = Measure(count, mixed, steps, 1);
+            var fresh = Measure(count, mixed, steps, 1, reuse: false);
             var all = Measure(count, mixed, steps, Environment.ProcessorCount);
             if (all.Contacts != one.Contacts)
                 throw new InvalidOperationException($"{name}: {one.Contacts} touching points on 1 thread, {all.Contacts} on {Environment.ProcessorCount}");
-            output.WriteLine($"| {name} | {count} | {one.Contacts} ({one.Manifolds}) | {one.Broad} | {one.Narrow} | {one.Both} | {all.Broad} | {all.Narrow} | {all.Both} | {one.Bytes} / {all.Bytes} |");
+            output.WriteLine($"| {name} | {count} | {one.Contacts} ({one.Manifolds}) | {one.Broad} | {one.Narrow} | {one.Both} | {fresh.Narrow} | {all.Broad} | {all.Narrow} | {all.Both} | {one.Bytes} / {all.Bytes} |");
         }
 
-        static (string Broad, string Narrow, string Both, long Bytes, int Contacts, int Manifolds) Measure(int count, bool mixed, int steps, int threads)
+        static (string Broad, string Narrow, string Both, long Bytes, int Contacts, int Manifolds) Measure(int count, bool mixed, int steps, int threads, bool reuse = true)
         {
             World w = Pile(count, mixed, 1, threads);
+            if (!reuse)
+            {
+                WorldSettings s = w.Settings;
+                s.ManifoldReuseDistance = 0;
+                w.Settings = s;
+            }
             for (int i = 0; i < 20; i++) w.Step(1 / 60f);
             var broad = new double[steps];
             var narrow = new double[steps];
