@@ -29,6 +29,10 @@ namespace Fulcrum
         // Per shape slot: the farthest its geometry reaches from its own origin (manifold reuse
         // bounds how far a rotation can move a shape's points with it).
         float[] _shapeRadius = Array.Empty<float>();
+        // Per shape slot: its world pose as the broad phase computed it this step (stamped with
+        // the step index), so the narrow phase does not rebuild it for every pair.
+        Pose[] _shapePose = Array.Empty<Pose>();
+        long[] _shapePoseStep = Array.Empty<long>();
         long[] _fatBoxStep = Array.Empty<long>();
         // Parallel narrow phase (Settings.Threads > 1): the candidates' pair functions run on
         // the worker pool first; per contact slot, the candidate index + 1 (0: none).
@@ -50,9 +54,12 @@ namespace Fulcrum
                 int n = Math.Max(Shapes.SlotCount, 2 * _shapeMotion.Length);
                 Array.Resize(ref _shapeMotion, n);
                 Array.Resize(ref _shapeRadius, n);
+                Array.Resize(ref _shapePose, n);
+                Array.Resize(ref _shapePoseStep, n);
                 Array.Resize(ref _fatBoxStep, n);
             }
             _shapeMotion[shape] = 0;
+            _shapePoseStep[shape] = -1;
             Aabb local = Shapes.Geometry[shape].ComputeAabb(Pose.Identity);
             _shapeRadius[shape] = local.Center.Length() + local.Extents.Length();
             _fatBoxStep[shape] = _stepIndex;
@@ -80,6 +87,10 @@ namespace Fulcrum
             OnCcdShapeRemoved(Shapes.Body[shape]);
         }
 
+        // The shape's world pose: this step's broad-phase copy for awake moving shapes, computed
+        // afresh for the others (static, sleeping).
+        Pose StepShapePose(int shape) => _shapePoseStep[shape] == _stepIndex ? _shapePose[shape] : ShapeWorldPose(shape);
+
         // Refreshes the bounds of awake moving shapes, swept over their predicted motion in
         // this step, moves the proxies whose swept bounds left their fat boxes (or whose fat
         // boxes became far too loose), then finds the new pairs.
@@ -93,7 +104,10 @@ namespace Fulcrum
                 int i = s.Active[k];
                 int body = s.Body[i];
                 if (b.Type[body] == BodyType.Static || !b.Awake[body]) continue;
-                Aabb tight = s.Geometry[i].ComputeAabb(ShapeWorldPose(i));
+                Pose pose = ShapeWorldPose(i);
+                _shapePose[i] = pose;
+                _shapePoseStep[i] = _stepIndex;
+                Aabb tight = s.Geometry[i].ComputeAabb(pose);
                 s.WorldAabb[i] = tight;
                 float angular = b.AngularVelocity[body].Length() * dt * Reach(tight, b.Center[body]);
                 Aabb swept = tight.Expanded(grow + angular);
@@ -218,8 +232,8 @@ namespace Fulcrum
                 if (!sensor) speculative = SpeculativeBase + MotionBound(shapeA, shapeB, dt);
                 if (reuse)
                 {
-                    poseA = ShapeWorldPose(shapeA);
-                    poseB = ShapeWorldPose(shapeB);
+                    poseA = StepShapePose(shapeA);
+                    poseB = StepShapePose(shapeB);
                     if (CanReuseManifolds(ct, speculative, poseA, poseB) && ReuseManifolds(ref ct, speculative, poseA, poseB))
                     {
                         TakeNarrowResult(c, awakeA, awakeB);
@@ -240,8 +254,8 @@ namespace Fulcrum
                     buffer.Clear(speculative);
                     if (!reuse)
                     {
-                        poseA = ShapeWorldPose(shapeA);
-                        poseB = ShapeWorldPose(shapeB);
+                        poseA = StepShapePose(shapeA);
+                        poseB = StepShapePose(shapeB);
                     }
                     CollisionTable.Collide(Shapes.Geometry[shapeA], poseA, Shapes.Geometry[shapeB], poseB, buffer);
                 }
@@ -299,7 +313,7 @@ namespace Fulcrum
                 float reach = SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
                 if (!Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB])) continue;
                 // The serial pass will most likely carry these manifolds over (it decides again).
-                if (reuse && CanReuseManifolds(ct, SpeculativeBase + MotionBound(shapeA, shapeB, dt), ShapeWorldPose(shapeA), ShapeWorldPose(shapeB)))
+                if (reuse && CanReuseManifolds(ct, SpeculativeBase + MotionBound(shapeA, shapeB, dt), StepShapePose(shapeA), StepShapePose(shapeB)))
                     continue;
                 job.Add(c, awakeA, awakeB);
             }
@@ -321,7 +335,7 @@ namespace Fulcrum
             ref Contact ct = ref ContactGraph.Contacts[c];
             int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
             buffer.Clear(SpeculativeBase + MotionBound(shapeA, shapeB, dt));
-            CollisionTable.Collide(Shapes.Geometry[shapeA], ShapeWorldPose(shapeA), Shapes.Geometry[shapeB], ShapeWorldPose(shapeB), buffer);
+            CollisionTable.Collide(Shapes.Geometry[shapeA], StepShapePose(shapeA), Shapes.Geometry[shapeB], StepShapePose(shapeB), buffer);
         }
 
         // The candidate index of contact c's precomputed result, or -1 (none, or computed
