@@ -134,7 +134,7 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, out Lanes l, bool inertia, bool motion)
+        static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l, bool inertia, bool motion)
         {
             if (SolverBodyLanes.IsSupported)
             {
@@ -142,7 +142,6 @@ namespace Fulcrum.Dynamics
                 GatherSide(bodies, laneBodies, 2 * groupOffset + 1, inertia, motion, out l.VB, out l.InvMassB, out l.WB, out l.FlagB, out l.IB, out l.DpB, out l.DThetaB);
                 return;
             }
-            l = default;
             int width = Width;
             for (int lane = 0; lane < width; lane++)
             {
@@ -287,13 +286,16 @@ namespace Fulcrum.Dynamics
             l.WB.Add(l.IB.Transform(angularB));
         }
 
-        // The passes run over ranges of groups [first, end): one method call per range keeps
-        // the lane registers' stack home (zeroed on entry) to one per call, not one per group.
+        // The passes run over ranges of groups [first, end). The lanes' stack home is a local of
+        // the range method, handed to the per-group methods by reference: a local of theirs is
+        // zeroed on every entry (1.4 kB, .locals init) because the gather writes it through out
+        // parameters, and the per-group methods are too large to be inlined into the loop.
 
         /// <summary>The warm start of groups [first, end).</summary>
         public static void WarmStart(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies)
         {
-            for (int g = first; g < end; g++) WarmStart(ref groups[g], bodies, laneBodies, g * Width);
+            Lanes l = default;
+            for (int g = first; g < end; g++) WarmStart(ref groups[g], bodies, laneBodies, g * Width, ref l);
         }
 
         /// <summary>One pass (biased or relaxing) over groups [first, end).</summary>
@@ -301,26 +303,29 @@ namespace Fulcrum.Dynamics
             in Softness contact, in Softness fixedBody, float invH, float maxPushSpeed, bool useBias)
         {
             var soft = new SoftLanes(contact, fixedBody);
+            Lanes l = default;
             for (int g = first; g < end; g++)
-                Solve(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, soft, invH, maxPushSpeed, useBias);
+                Solve(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, soft, invH, maxPushSpeed, useBias, ref l);
         }
 
         /// <summary>ContactSolver.RefreshApproach for groups [first, end).</summary>
         public static void RefreshApproach(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies)
         {
-            for (int g = first; g < end; g++) RefreshApproach(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width);
+            Lanes l = default;
+            for (int g = first; g < end; g++) RefreshApproach(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, ref l);
         }
 
         /// <summary>The restitution pass of groups [first, end).</summary>
         public static void ApplyRestitution(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies, float threshold)
         {
-            for (int g = first; g < end; g++) ApplyRestitution(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, threshold);
+            Lanes l = default;
+            for (int g = first; g < end; g++) ApplyRestitution(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, threshold, ref l);
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, false);
+            Gather(bodies, laneBodies, groupOffset, ref l, true, false);
             Vector<float> l0 = w.P0.Impulse, l1 = w.P1.Impulse, l2 = w.P2.Impulse, l3 = w.P3.Impulse;
             Vector<float> f1 = w.FrictionImpulse1, f2 = w.FrictionImpulse2;
             Tangents(w.Normal, out WideVector3 t1, out WideVector3 t2);
@@ -346,11 +351,11 @@ namespace Fulcrum.Dynamics
         }
 
         // One pass (biased or relaxing) over a group; the same rows, in the same order, as ContactSolver.Solve.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        [MethodImpl(MethodImplOptions.NoInlining)]
         static void Solve(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, in SoftLanes soft,
-            float invH, float maxPushSpeed, bool useBias)
+            float invH, float maxPushSpeed, bool useBias, ref Lanes l)
         {
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, true);
+            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
             WideVector3 dp = l.DpB;
             dp.Subtract(l.DpA);
             Vector<float> drift = WideVector3.Dot(w.Normal, dp);
@@ -513,11 +518,11 @@ namespace Fulcrum.Dynamics
             return first;
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void RefreshApproach(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void RefreshApproach(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
             if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, false, false);
+            Gather(bodies, laneBodies, groupOffset, ref l, false, false);
             Refresh(w.P0, ref impact.P0, w.Loaded, 1, w.Normal, l);
             Refresh(w.P1, ref impact.P1, w.Loaded, 2, w.Normal, l);
             Refresh(w.P2, ref impact.P2, w.Loaded, 4, w.Normal, l);
@@ -532,11 +537,11 @@ namespace Fulcrum.Dynamics
             i.RelativeVelocity = Vector.ConditionalSelect(IsLoaded(loaded, bit), i.RelativeVelocity, RowVelocity(p.AngularA, p.AngularB, n, l));
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void ApplyRestitution(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void ApplyRestitution(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold, ref Lanes l)
         {
             if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, false);
+            Gather(bodies, laneBodies, groupOffset, ref l, true, false);
             var limit = new Vector<float>(-threshold);
             Restitute(ref w.P0, impact.P0, impact.Restitution, w.Loaded, 1, w.Normal, limit, ref l);
             Restitute(ref w.P1, impact.P1, impact.Restitution, w.Loaded, 2, w.Normal, limit, ref l);
