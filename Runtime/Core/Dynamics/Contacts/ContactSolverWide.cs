@@ -474,8 +474,12 @@ namespace Fulcrum.Dynamics
             Vector<float> gamma2 = Vector.ConditionalSelect(Vector.GreaterThan(is2, zero), k22 * is2 / ms2, zero);
 
             Vector<float> a1 = p1.Impulse, a2 = p2.Impulse;
-            vn1 = RowVelocity(p1.AngularA, p1.AngularB, n, l);
-            vn2 = RowVelocity(p2.AngularA, p2.AngularB, n, l);
+            // RowVelocity of both rows, their shared linear term n . (vB - vA) once.
+            WideVector3 dv = l.VB;
+            dv.Subtract(l.VA);
+            Vector<float> linearVn = WideVector3.Dot(n, dv);
+            vn1 = linearVn + WideVector3.Dot(p1.AngularB, l.WB) - WideVector3.Dot(p1.AngularA, l.WA);
+            vn2 = linearVn + WideVector3.Dot(p2.AngularB, l.WB) - WideVector3.Dot(p2.AngularA, l.WA);
             Vector<float> A11 = k11 + gamma1, A22 = k22 + gamma2, A12 = k12;
             Vector<float> b1 = vn1 + bias1 - (k11 * a1 + k12 * a2);
             Vector<float> b2 = vn2 + bias2 - (k12 * a1 + k22 * a2);
@@ -486,20 +490,26 @@ namespace Fulcrum.Dynamics
             Vector<float> c1x1 = -(A22 * b1 - A12 * b2) * invDet;
             Vector<float> c1x2 = -(A11 * b2 - A12 * b1) * invDet;
             var ok1 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c1x1, zero), Vector.GreaterThanOrEqual(c1x2, zero));
-            Vector<float> c2x1 = -b1 / A11;
-            var ok2 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c2x1, zero), Vector.GreaterThanOrEqual(A12 * c2x1 + b2, zero));
-            Vector<float> c3x2 = -b2 / A22;
-            var ok3 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c3x2, zero), Vector.GreaterThanOrEqual(A12 * c3x2 + b1, zero));
-            var ok4 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(b1, zero), Vector.GreaterThanOrEqual(b2, zero));
-            // No case holding (round-off only): the impulses stay.
-            Vector<float> x1 = Vector.ConditionalSelect(ok4, zero, a1);
-            Vector<float> x2 = Vector.ConditionalSelect(ok4, zero, a2);
-            x1 = Vector.ConditionalSelect(ok3, zero, x1);
-            x2 = Vector.ConditionalSelect(ok3, c3x2, x2);
-            x1 = Vector.ConditionalSelect(ok2, c2x1, x1);
-            x2 = Vector.ConditionalSelect(ok2, zero, x2);
-            x1 = Vector.ConditionalSelect(ok1, c1x1, x1);
-            x2 = Vector.ConditionalSelect(ok1, c1x2, x2);
+            Vector<float> x1 = c1x1, x2 = c1x2;
+            // Both points pushing in every lane (resting stacks, nearly always): the other cases
+            // cannot win, and their two divisions and eight selects are skipped.
+            if (!Vector.EqualsAll(ok1, new Vector<int>(-1)))
+            {
+                Vector<float> c2x1 = -b1 / A11;
+                var ok2 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c2x1, zero), Vector.GreaterThanOrEqual(A12 * c2x1 + b2, zero));
+                Vector<float> c3x2 = -b2 / A22;
+                var ok3 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c3x2, zero), Vector.GreaterThanOrEqual(A12 * c3x2 + b1, zero));
+                var ok4 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(b1, zero), Vector.GreaterThanOrEqual(b2, zero));
+                // No case holding (round-off only): the impulses stay.
+                x1 = Vector.ConditionalSelect(ok4, zero, a1);
+                x2 = Vector.ConditionalSelect(ok4, zero, a2);
+                x1 = Vector.ConditionalSelect(ok3, zero, x1);
+                x2 = Vector.ConditionalSelect(ok3, c3x2, x2);
+                x1 = Vector.ConditionalSelect(ok2, c2x1, x1);
+                x2 = Vector.ConditionalSelect(ok2, zero, x2);
+                x1 = Vector.ConditionalSelect(ok1, c1x1, x1);
+                x2 = Vector.ConditionalSelect(ok1, c1x2, x2);
+            }
 
             Vector<float> d1 = x1 - a1, d2 = x2 - a2;
             p1.Impulse = x1;
