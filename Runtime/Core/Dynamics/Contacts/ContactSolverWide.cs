@@ -325,7 +325,13 @@ namespace Fulcrum.Dynamics
         [MethodImpl(MethodImplOptions.NoInlining)]
         static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
-            Gather(bodies, laneBodies, groupOffset, ref l, true, false);
+            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
+            // The substep's separations, for its biased passes (the bodies move after those).
+            Vector<float> drift = Drift(w.Normal, l);
+            w.P0.Current = Separation(w.P0, drift, l);
+            w.P1.Current = Separation(w.P1, drift, l);
+            w.P2.Current = Separation(w.P2, drift, l);
+            w.P3.Current = Separation(w.P3, drift, l);
             Vector<float> l0 = w.P0.Impulse, l1 = w.P1.Impulse, l2 = w.P2.Impulse, l3 = w.P3.Impulse;
             Vector<float> f1 = w.FrictionImpulse1, f2 = w.FrictionImpulse2;
             Tangents(w.Normal, out WideVector3 t1, out WideVector3 t2);
@@ -350,15 +356,46 @@ namespace Fulcrum.Dynamics
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
-        // One pass (biased or relaxing) over a group; the same rows, in the same order, as ContactSolver.Solve.
+        /// <summary>n . (dpB - dpA): how far the centres of mass have closed along the normal since the step began.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static Vector<float> Drift(in WideVector3 n, in Lanes l)
+        {
+            WideVector3 dp = l.DpB;
+            dp.Subtract(l.DpA);
+            return WideVector3.Dot(n, dp);
+        }
+
+        /// <summary>A point's separation at the bodies' pose now (ContactSolver.Solve's first-order update).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static Vector<float> Separation(in WidePoint p, Vector<float> drift, in Lanes l) =>
+            p.Separation + drift + WideVector3.Dot(l.DThetaB, p.AngularB) - WideVector3.Dot(l.DThetaA, p.AngularA);
+
+        // One pass (biased or relaxing) over a group; the same rows, in the same order, as
+        // ContactSolver.Solve. The biased passes of a substep share the pose of its warm start,
+        // which stored their separations; the relaxing pass follows the position update and
+        // gathers the motion itself.
         [MethodImpl(MethodImplOptions.NoInlining)]
         static void Solve(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, in SoftLanes soft,
             float invH, float maxPushSpeed, bool useBias, ref Lanes l)
         {
-            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
-            WideVector3 dp = l.DpB;
-            dp.Subtract(l.DpA);
-            Vector<float> drift = WideVector3.Dot(w.Normal, dp);
+            Vector<float> s0, s1, s2, s3;
+            if (useBias)
+            {
+                Gather(bodies, laneBodies, groupOffset, ref l, true, false);
+                s0 = w.P0.Current;
+                s1 = w.P1.Current;
+                s2 = w.P2.Current;
+                s3 = w.P3.Current;
+            }
+            else
+            {
+                Gather(bodies, laneBodies, groupOffset, ref l, true, true);
+                Vector<float> drift = Drift(w.Normal, l);
+                s0 = Separation(w.P0, drift, l);
+                s1 = Separation(w.P1, drift, l);
+                s2 = Separation(w.P2, drift, l);
+                s3 = Separation(w.P3, drift, l);
+            }
             var inverseStep = new Vector<float>(invH);
             var maxPush = new Vector<float>(-maxPushSpeed);
             // A body that cannot move makes the contact stiffer (ContactSolver.Prepare).
@@ -368,9 +405,9 @@ namespace Fulcrum.Dynamics
             var massScale = Vector.ConditionalSelect(fixedBody, soft.FixedMassScale, soft.MassScale);
             var impulseScale = Vector.ConditionalSelect(fixedBody, soft.FixedImpulseScale, soft.ImpulseScale);
             Vector<int> loaded = w.Loaded;
-            Vector<int> first = SolvePair(ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, 1, 2, w.Normal, drift, inverseStep, maxPush,
+            Vector<int> first = SolvePair(ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, 1, 2, w.Normal, s0, s1, inverseStep, maxPush,
                 rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn0, out Vector<float> vn1, ref l);
-            Vector<int> first2 = SolvePair(ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, 4, 8, w.Normal, drift, inverseStep, maxPush,
+            Vector<int> first2 = SolvePair(ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, 4, 8, w.Normal, s2, s3, inverseStep, maxPush,
                 rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn2, out Vector<float> vn3, ref l);
             first = Vector.BitwiseOr(first, first2);
             if (!Vector.EqualsAll(first, Vector<int>.Zero))
@@ -461,12 +498,10 @@ namespace Fulcrum.Dynamics
         // load for the first time in this step (and sets them in loaded).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<int> SolvePair(ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22, int bit1, int bit2,
-            in WideVector3 n, Vector<float> drift, Vector<float> inverseStep, Vector<float> maxPush,
+            in WideVector3 n, Vector<float> s1, Vector<float> s2, Vector<float> inverseStep, Vector<float> maxPush,
             Vector<float> rate, Vector<float> massScale, Vector<float> impulseScale, bool useBias,
             ref Vector<int> loaded, out Vector<float> vn1, out Vector<float> vn2, ref Lanes l)
         {
-            Vector<float> s1 = p1.Separation + drift + WideVector3.Dot(l.DThetaB, p1.AngularB) - WideVector3.Dot(l.DThetaA, p1.AngularA);
-            Vector<float> s2 = p2.Separation + drift + WideVector3.Dot(l.DThetaB, p2.AngularB) - WideVector3.Dot(l.DThetaA, p2.AngularA);
             Terms(s1, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias1, out Vector<float> ms1, out Vector<float> is1);
             Terms(s2, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias2, out Vector<float> ms2, out Vector<float> is2);
             Vector<float> zero = Vector<float>.Zero;
