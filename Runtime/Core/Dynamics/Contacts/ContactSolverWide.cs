@@ -370,6 +370,20 @@ namespace Fulcrum.Dynamics
         static Vector<float> Separation(in WidePoint p, Vector<float> drift, in Lanes l) =>
             p.Separation + drift + WideVector3.Dot(l.DThetaB, p.AngularB) - WideVector3.Dot(l.DThetaA, p.AngularA);
 
+        // The relaxing pass's gather: the bodies with their motion, and the separations at their pose.
+        // Not inlined: the per-group solve is at the JIT's inlining budget, and SolvePair must fit.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void GatherMoved(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l,
+            out Vector<float> s0, out Vector<float> s1, out Vector<float> s2, out Vector<float> s3)
+        {
+            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
+            Vector<float> drift = Drift(w.Normal, l);
+            s0 = Separation(w.P0, drift, l);
+            s1 = Separation(w.P1, drift, l);
+            s2 = Separation(w.P2, drift, l);
+            s3 = Separation(w.P3, drift, l);
+        }
+
         // One pass (biased or relaxing) over a group; the same rows, in the same order, as
         // ContactSolver.Solve. The biased passes of a substep share the pose of its warm start,
         // which stored their separations; the relaxing pass follows the position update and
@@ -387,15 +401,7 @@ namespace Fulcrum.Dynamics
                 s2 = w.P2.Current;
                 s3 = w.P3.Current;
             }
-            else
-            {
-                Gather(bodies, laneBodies, groupOffset, ref l, true, true);
-                Vector<float> drift = Drift(w.Normal, l);
-                s0 = Separation(w.P0, drift, l);
-                s1 = Separation(w.P1, drift, l);
-                s2 = Separation(w.P2, drift, l);
-                s3 = Separation(w.P3, drift, l);
-            }
+            else GatherMoved(ref w, bodies, laneBodies, groupOffset, ref l, out s0, out s1, out s2, out s3);
             var inverseStep = new Vector<float>(invH);
             var maxPush = new Vector<float>(-maxPushSpeed);
             // A body that cannot move makes the contact stiffer (ContactSolver.Prepare).
@@ -405,10 +411,16 @@ namespace Fulcrum.Dynamics
             var massScale = Vector.ConditionalSelect(fixedBody, soft.FixedMassScale, soft.MassScale);
             var impulseScale = Vector.ConditionalSelect(fixedBody, soft.FixedImpulseScale, soft.ImpulseScale);
             Vector<int> loaded = w.Loaded;
-            Vector<int> first = SolvePair(ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, 1, 2, w.Normal, s0, s1, inverseStep, maxPush,
-                rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn0, out Vector<float> vn1, ref l);
-            Vector<int> first2 = SolvePair(ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, 4, 8, w.Normal, s2, s3, inverseStep, maxPush,
-                rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn2, out Vector<float> vn3, ref l);
+            // The rows' bias and softness hang on the separations only: all four before the
+            // velocity-dependent part (which keeps SolvePair's arguments few enough to inline).
+            Terms(s0, w.K11a, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias0, out Vector<float> gamma0);
+            Terms(s1, w.K22a, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias1, out Vector<float> gamma1);
+            Terms(s2, w.K11b, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias2, out Vector<float> gamma2);
+            Terms(s3, w.K22b, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias3, out Vector<float> gamma3);
+            Vector<int> first = SolvePair(ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, 1, 2, w.Normal, bias0, gamma0, bias1, gamma1,
+                ref loaded, out Vector<float> vn0, out Vector<float> vn1, ref l);
+            Vector<int> first2 = SolvePair(ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, 4, 8, w.Normal, bias2, gamma2, bias3, gamma3,
+                ref loaded, out Vector<float> vn2, out Vector<float> vn3, ref l);
             first = Vector.BitwiseOr(first, first2);
             if (!Vector.EqualsAll(first, Vector<int>.Zero))
             {
@@ -475,22 +487,24 @@ namespace Fulcrum.Dynamics
             approach = Vector.ConditionalSelect(mask, Vector.Max(vn, approach), approach);
         }
 
+        // A normal row's velocity bias and gamma = K impulseScale / massScale, the compliance the
+        // soft row adds to the block's diagonal (ContactSolver.Solve).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Terms(Vector<float> s, Vector<float> inverseStep, Vector<float> maxPush, Vector<float> rate, Vector<float> massScale,
-            Vector<float> impulseScale, bool useBias, out Vector<float> bias, out Vector<float> ms, out Vector<float> @is)
+        static void Terms(Vector<float> s, Vector<float> k, Vector<float> inverseStep, Vector<float> maxPush, Vector<float> rate, Vector<float> massScale,
+            Vector<float> impulseScale, bool useBias, out Vector<float> bias, out Vector<float> gamma)
         {
             var speculative = Vector.GreaterThan(s, Vector<float>.Zero);
             if (useBias)
             {
                 bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector.Max(rate * s, maxPush));
-                ms = Vector.ConditionalSelect(speculative, Vector<float>.One, massScale);
-                @is = Vector.ConditionalSelect(speculative, Vector<float>.Zero, impulseScale);
+                Vector<float> ms = Vector.ConditionalSelect(speculative, Vector<float>.One, massScale);
+                Vector<float> @is = Vector.ConditionalSelect(speculative, Vector<float>.Zero, impulseScale);
+                gamma = Vector.ConditionalSelect(Vector.GreaterThan(@is, Vector<float>.Zero), k * @is / ms, Vector<float>.Zero);
             }
             else
             {
                 bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector<float>.Zero);
-                ms = Vector<float>.One;
-                @is = Vector<float>.Zero;
+                gamma = Vector<float>.Zero;
             }
         }
 
@@ -498,15 +512,10 @@ namespace Fulcrum.Dynamics
         // load for the first time in this step (and sets them in loaded).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<int> SolvePair(ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22, int bit1, int bit2,
-            in WideVector3 n, Vector<float> s1, Vector<float> s2, Vector<float> inverseStep, Vector<float> maxPush,
-            Vector<float> rate, Vector<float> massScale, Vector<float> impulseScale, bool useBias,
+            in WideVector3 n, Vector<float> bias1, Vector<float> gamma1, Vector<float> bias2, Vector<float> gamma2,
             ref Vector<int> loaded, out Vector<float> vn1, out Vector<float> vn2, ref Lanes l)
         {
-            Terms(s1, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias1, out Vector<float> ms1, out Vector<float> is1);
-            Terms(s2, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias2, out Vector<float> ms2, out Vector<float> is2);
             Vector<float> zero = Vector<float>.Zero;
-            Vector<float> gamma1 = Vector.ConditionalSelect(Vector.GreaterThan(is1, zero), k11 * is1 / ms1, zero);
-            Vector<float> gamma2 = Vector.ConditionalSelect(Vector.GreaterThan(is2, zero), k22 * is2 / ms2, zero);
 
             Vector<float> a1 = p1.Impulse, a2 = p2.Impulse;
             // RowVelocity of both rows, their shared linear term n . (vB - vA) once.
