@@ -215,7 +215,7 @@ namespace Fulcrum.Dynamics
                 out Vector<float> qx, out Vector<float> qy, out Vector<float> qz, out Vector<float> qw);
             dp = new WideVector3 { X = px, Y = py, Z = pz };
             // SolverBody.DeltaAngle, lane by lane: 2 x the vector part, sign chosen by w.
-            Vector<float> twice = Vector.ConditionalSelect(Vector.LessThan(qw, Vector<float>.Zero), new Vector<float>(-2f), new Vector<float>(2f));
+            Vector<float> twice = WideVector3.Select(Vector.LessThan(qw, Vector<float>.Zero), new Vector<float>(-2f), new Vector<float>(2f));
             dTheta = new WideVector3 { X = qx * twice, Y = qy * twice, Z = qz * twice };
         }
 
@@ -407,9 +407,9 @@ namespace Fulcrum.Dynamics
             // A body that cannot move makes the contact stiffer (ContactSolver.Prepare).
             var fixedBody = Vector.BitwiseOr(Vector.Equals(Vector.AsVectorInt32(l.FlagA), Vector<int>.Zero),
                 Vector.Equals(Vector.AsVectorInt32(l.FlagB), Vector<int>.Zero));
-            var rate = Vector.ConditionalSelect(fixedBody, soft.FixedBiasRate, soft.BiasRate);
-            var massScale = Vector.ConditionalSelect(fixedBody, soft.FixedMassScale, soft.MassScale);
-            var impulseScale = Vector.ConditionalSelect(fixedBody, soft.FixedImpulseScale, soft.ImpulseScale);
+            var rate = WideVector3.Select(fixedBody, soft.FixedBiasRate, soft.BiasRate);
+            var massScale = WideVector3.Select(fixedBody, soft.FixedMassScale, soft.MassScale);
+            var impulseScale = WideVector3.Select(fixedBody, soft.FixedImpulseScale, soft.ImpulseScale);
             Vector<int> loaded = w.Loaded;
             // The rows' bias and softness hang on the separations only: all four before the
             // velocity-dependent part (which keeps SolvePair's arguments few enough to inline).
@@ -444,7 +444,7 @@ namespace Fulcrum.Dynamics
             Vector<float> new1 = old1 - w.FrictionMass1 * WideVector3.Dot(t1, dv);
             Vector<float> new2 = old2 - w.FrictionMass2 * WideVector3.Dot(t2, dv);
             Vector<float> len2 = new1 * new1 + new2 * new2;
-            Vector<float> scale = Vector.ConditionalSelect(Vector.GreaterThan(len2, maxFriction * maxFriction),
+            Vector<float> scale = WideVector3.Select(Vector.GreaterThan(len2, maxFriction * maxFriction),
                 maxFriction / Vector.SquareRoot(len2), Vector<float>.One);
             new1 *= scale;
             new2 *= scale;
@@ -473,7 +473,7 @@ namespace Fulcrum.Dynamics
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void Tangents(in WideVector3 n, out WideVector3 t1, out WideVector3 t2)
         {
-            Vector<float> sign = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(n.Z, Vector<float>.Zero), Vector<float>.One, new Vector<float>(-1f));
+            Vector<float> sign = WideVector3.Select(Vector.GreaterThanOrEqual(n.Z, Vector<float>.Zero), Vector<float>.One, new Vector<float>(-1f));
             Vector<float> a = new Vector<float>(-1f) / (sign + n.Z);
             Vector<float> b = n.X * n.Y * a;
             t1 = new WideVector3 { X = Vector<float>.One + sign * n.X * n.X * a, Y = sign * b, Z = -sign * n.X };
@@ -484,7 +484,7 @@ namespace Fulcrum.Dynamics
         static void RecordImpact(ref Vector<float> approach, Vector<int> first, int bit, Vector<float> vn)
         {
             var mask = Vector.Equals(Vector.BitwiseAnd(first, new Vector<int>(bit)), new Vector<int>(bit));
-            approach = Vector.ConditionalSelect(mask, Vector.Max(vn, approach), approach);
+            approach = WideVector3.Select(mask, Vector.Max(vn, approach), approach);
         }
 
         // A normal row's velocity bias and gamma = K impulseScale / massScale, the compliance the
@@ -496,14 +496,14 @@ namespace Fulcrum.Dynamics
             var speculative = Vector.GreaterThan(s, Vector<float>.Zero);
             if (useBias)
             {
-                bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector.Max(rate * s, maxPush));
-                Vector<float> ms = Vector.ConditionalSelect(speculative, Vector<float>.One, massScale);
-                Vector<float> @is = Vector.ConditionalSelect(speculative, Vector<float>.Zero, impulseScale);
-                gamma = Vector.ConditionalSelect(Vector.GreaterThan(@is, Vector<float>.Zero), k * @is / ms, Vector<float>.Zero);
+                bias = WideVector3.Select(speculative, s * inverseStep, Vector.Max(rate * s, maxPush));
+                Vector<float> ms = WideVector3.Select(speculative, Vector<float>.One, massScale);
+                Vector<float> @is = WideVector3.Select(speculative, Vector<float>.Zero, impulseScale);
+                gamma = WideVector3.Select(Vector.GreaterThan(@is, Vector<float>.Zero), k * @is / ms, Vector<float>.Zero);
             }
             else
             {
-                bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector<float>.Zero);
+                bias = WideVector3.Select(speculative, s * inverseStep, Vector<float>.Zero);
                 gamma = Vector<float>.Zero;
             }
         }
@@ -530,7 +530,7 @@ namespace Fulcrum.Dynamics
 
             // The four cases of the 2x2 LCP, each checked per lane; the first that holds wins.
             Vector<float> det = A11 * A22 - A12 * A12;
-            Vector<float> invDet = Vector.ConditionalSelect(Vector.Equals(det, zero), zero, Vector<float>.One / det);
+            Vector<float> invDet = WideVector3.Select(Vector.Equals(det, zero), zero, Vector<float>.One / det);
             Vector<float> c1x1 = -(A22 * b1 - A12 * b2) * invDet;
             Vector<float> c1x2 = -(A11 * b2 - A12 * b1) * invDet;
             var ok1 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c1x1, zero), Vector.GreaterThanOrEqual(c1x2, zero));
@@ -545,14 +545,14 @@ namespace Fulcrum.Dynamics
                 var ok3 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c3x2, zero), Vector.GreaterThanOrEqual(A12 * c3x2 + b1, zero));
                 var ok4 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(b1, zero), Vector.GreaterThanOrEqual(b2, zero));
                 // No case holding (round-off only): the impulses stay.
-                x1 = Vector.ConditionalSelect(ok4, zero, a1);
-                x2 = Vector.ConditionalSelect(ok4, zero, a2);
-                x1 = Vector.ConditionalSelect(ok3, zero, x1);
-                x2 = Vector.ConditionalSelect(ok3, c3x2, x2);
-                x1 = Vector.ConditionalSelect(ok2, c2x1, x1);
-                x2 = Vector.ConditionalSelect(ok2, zero, x2);
-                x1 = Vector.ConditionalSelect(ok1, c1x1, x1);
-                x2 = Vector.ConditionalSelect(ok1, c1x2, x2);
+                x1 = WideVector3.Select(ok4, zero, a1);
+                x2 = WideVector3.Select(ok4, zero, a2);
+                x1 = WideVector3.Select(ok3, zero, x1);
+                x2 = WideVector3.Select(ok3, c3x2, x2);
+                x1 = WideVector3.Select(ok2, c2x1, x1);
+                x2 = WideVector3.Select(ok2, zero, x2);
+                x1 = WideVector3.Select(ok1, c1x1, x1);
+                x2 = WideVector3.Select(ok1, c1x2, x2);
             }
 
             Vector<float> d1 = x1 - a1, d2 = x2 - a2;
@@ -588,7 +588,7 @@ namespace Fulcrum.Dynamics
 
         static void Refresh(in WidePoint p, ref WideImpactPoint i, Vector<int> loaded, int bit, in WideVector3 n, in Lanes l)
         {
-            i.RelativeVelocity = Vector.ConditionalSelect(IsLoaded(loaded, bit), i.RelativeVelocity, RowVelocity(p.AngularA, p.AngularB, n, l));
+            i.RelativeVelocity = WideVector3.Select(IsLoaded(loaded, bit), i.RelativeVelocity, RowVelocity(p.AngularA, p.AngularB, n, l));
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
@@ -616,7 +616,7 @@ namespace Fulcrum.Dynamics
             Vector<float> vn = RowVelocity(p.AngularA, p.AngularB, n, l);
             Vector<float> old = p.Impulse;
             Vector<float> total = Vector.Max(old - i.EffectiveMass * (vn + e * i.RelativeVelocity), zero);
-            total = Vector.ConditionalSelect(active, total, old);
+            total = WideVector3.Select(active, total, old);
             p.Impulse = total;
             Vector<float> d = total - old;
             Apply(WideVector3.Scale(n, d), WideVector3.Scale(p.AngularA, d), WideVector3.Scale(p.AngularB, d), ref l);
