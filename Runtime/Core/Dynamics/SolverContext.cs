@@ -525,10 +525,17 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        /// <summary>Applies the accumulated impulses of every constraint.</summary>
+        /// <summary>
+        /// Applies the accumulated impulses of every constraint. The wide contacts also take their
+        /// separations at the bodies' pose now, which the biased passes that follow read.
+        /// </summary>
         public void WarmStart() => RunColors(ColorPass.WarmStart);
 
-        /// <summary>One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out) or not (relax).</summary>
+        /// <summary>
+        /// One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out)
+        /// or not (relax). A biased pass takes the wide contacts' separations from the last
+        /// <see cref="WarmStart"/>: the bodies must not have moved since.
+        /// </summary>
         public void Solve(bool useBias) => RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
 
         /// <summary>Restitution's free approach speeds from the velocities now (TGS, each substep; see ContactSolver.RecordImpact).</summary>

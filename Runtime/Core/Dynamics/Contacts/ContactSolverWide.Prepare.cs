@@ -36,6 +36,7 @@ namespace Fulcrum.Dynamics
             int width = Width;
             bool restitution = false;
             var warm = new Vector<float>(warmScale);
+            Lanes l = default;
             for (int g = first; g < end; g++)
             {
                 int offset = g * width;
@@ -45,7 +46,7 @@ namespace Fulcrum.Dynamics
                     int mi = laneManifolds[offset + lane];
                     if (mi >= 0) LoadManifold(ref m, lane, ref manifolds[mi]);
                 }
-                Gather(bodies, laneBodies, offset, out Lanes l, true, false);
+                Gather(bodies, laneBodies, offset, ref l, true, false);
                 int reject = PrepareGroup(ref groups[g], ref impacts[g], m, l, warm, out Vector<int> far);
                 restitution |= !Vector.EqualsAll(impacts[g].Restitution, Vector<float>.Zero);
                 for (int lane = 0; lane < width; lane++)

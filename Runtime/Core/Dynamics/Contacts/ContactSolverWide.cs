@@ -134,7 +134,7 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, out Lanes l, bool inertia, bool motion)
+        static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l, bool inertia, bool motion)
         {
             if (SolverBodyLanes.IsSupported)
             {
@@ -142,7 +142,6 @@ namespace Fulcrum.Dynamics
                 GatherSide(bodies, laneBodies, 2 * groupOffset + 1, inertia, motion, out l.VB, out l.InvMassB, out l.WB, out l.FlagB, out l.IB, out l.DpB, out l.DThetaB);
                 return;
             }
-            l = default;
             int width = Width;
             for (int lane = 0; lane < width; lane++)
             {
@@ -216,7 +215,7 @@ namespace Fulcrum.Dynamics
                 out Vector<float> qx, out Vector<float> qy, out Vector<float> qz, out Vector<float> qw);
             dp = new WideVector3 { X = px, Y = py, Z = pz };
             // SolverBody.DeltaAngle, lane by lane: 2 x the vector part, sign chosen by w.
-            Vector<float> twice = Vector.ConditionalSelect(Vector.LessThan(qw, Vector<float>.Zero), new Vector<float>(-2f), new Vector<float>(2f));
+            Vector<float> twice = WideVector3.Select(Vector.LessThan(qw, Vector<float>.Zero), new Vector<float>(-2f), new Vector<float>(2f));
             dTheta = new WideVector3 { X = qx * twice, Y = qy * twice, Z = qz * twice };
         }
 
@@ -287,13 +286,16 @@ namespace Fulcrum.Dynamics
             l.WB.Add(l.IB.Transform(angularB));
         }
 
-        // The passes run over ranges of groups [first, end): one method call per range keeps
-        // the lane registers' stack home (zeroed on entry) to one per call, not one per group.
+        // The passes run over ranges of groups [first, end). The lanes' stack home is a local of
+        // the range method, handed to the per-group methods by reference: a local of theirs is
+        // zeroed on every entry (1.4 kB, .locals init) because the gather writes it through out
+        // parameters, and the per-group methods are too large to be inlined into the loop.
 
         /// <summary>The warm start of groups [first, end).</summary>
         public static void WarmStart(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies)
         {
-            for (int g = first; g < end; g++) WarmStart(ref groups[g], bodies, laneBodies, g * Width);
+            Lanes l = default;
+            for (int g = first; g < end; g++) WarmStart(ref groups[g], bodies, laneBodies, g * Width, ref l);
         }
 
         /// <summary>One pass (biased or relaxing) over groups [first, end).</summary>
@@ -301,26 +303,35 @@ namespace Fulcrum.Dynamics
             in Softness contact, in Softness fixedBody, float invH, float maxPushSpeed, bool useBias)
         {
             var soft = new SoftLanes(contact, fixedBody);
+            Lanes l = default;
             for (int g = first; g < end; g++)
-                Solve(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, soft, invH, maxPushSpeed, useBias);
+                Solve(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, soft, invH, maxPushSpeed, useBias, ref l);
         }
 
         /// <summary>ContactSolver.RefreshApproach for groups [first, end).</summary>
         public static void RefreshApproach(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies)
         {
-            for (int g = first; g < end; g++) RefreshApproach(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width);
+            Lanes l = default;
+            for (int g = first; g < end; g++) RefreshApproach(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, ref l);
         }
 
         /// <summary>The restitution pass of groups [first, end).</summary>
         public static void ApplyRestitution(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies, float threshold)
         {
-            for (int g = first; g < end; g++) ApplyRestitution(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, threshold);
+            Lanes l = default;
+            for (int g = first; g < end; g++) ApplyRestitution(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, threshold, ref l);
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, false);
+            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
+            // The substep's separations, for its biased passes (the bodies move after those).
+            Vector<float> drift = Drift(w.Normal, l);
+            w.P0.Current = Separation(w.P0, drift, l);
+            w.P1.Current = Separation(w.P1, drift, l);
+            w.P2.Current = Separation(w.P2, drift, l);
+            w.P3.Current = Separation(w.P3, drift, l);
             Vector<float> l0 = w.P0.Impulse, l1 = w.P1.Impulse, l2 = w.P2.Impulse, l3 = w.P3.Impulse;
             Vector<float> f1 = w.FrictionImpulse1, f2 = w.FrictionImpulse2;
             Tangents(w.Normal, out WideVector3 t1, out WideVector3 t2);
@@ -345,28 +356,71 @@ namespace Fulcrum.Dynamics
             Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
-        // One pass (biased or relaxing) over a group; the same rows, in the same order, as ContactSolver.Solve.
+        /// <summary>n . (dpB - dpA): how far the centres of mass have closed along the normal since the step began.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Solve(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, in SoftLanes soft,
-            float invH, float maxPushSpeed, bool useBias)
+        static Vector<float> Drift(in WideVector3 n, in Lanes l)
         {
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, true);
             WideVector3 dp = l.DpB;
             dp.Subtract(l.DpA);
-            Vector<float> drift = WideVector3.Dot(w.Normal, dp);
+            return WideVector3.Dot(n, dp);
+        }
+
+        /// <summary>A point's separation at the bodies' pose now (ContactSolver.Solve's first-order update).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static Vector<float> Separation(in WidePoint p, Vector<float> drift, in Lanes l) =>
+            p.Separation + drift + WideVector3.Dot(l.DThetaB, p.AngularB) - WideVector3.Dot(l.DThetaA, p.AngularA);
+
+        // The relaxing pass's gather: the bodies with their motion, and the separations at their pose.
+        // Not inlined: the per-group solve is at the JIT's inlining budget, and SolvePair must fit.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void GatherMoved(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l,
+            out Vector<float> s0, out Vector<float> s1, out Vector<float> s2, out Vector<float> s3)
+        {
+            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
+            Vector<float> drift = Drift(w.Normal, l);
+            s0 = Separation(w.P0, drift, l);
+            s1 = Separation(w.P1, drift, l);
+            s2 = Separation(w.P2, drift, l);
+            s3 = Separation(w.P3, drift, l);
+        }
+
+        // One pass (biased or relaxing) over a group; the same rows, in the same order, as
+        // ContactSolver.Solve. The biased passes of a substep share the pose of its warm start,
+        // which stored their separations; the relaxing pass follows the position update and
+        // gathers the motion itself.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void Solve(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, in SoftLanes soft,
+            float invH, float maxPushSpeed, bool useBias, ref Lanes l)
+        {
+            Vector<float> s0, s1, s2, s3;
+            if (useBias)
+            {
+                Gather(bodies, laneBodies, groupOffset, ref l, true, false);
+                s0 = w.P0.Current;
+                s1 = w.P1.Current;
+                s2 = w.P2.Current;
+                s3 = w.P3.Current;
+            }
+            else GatherMoved(ref w, bodies, laneBodies, groupOffset, ref l, out s0, out s1, out s2, out s3);
             var inverseStep = new Vector<float>(invH);
             var maxPush = new Vector<float>(-maxPushSpeed);
             // A body that cannot move makes the contact stiffer (ContactSolver.Prepare).
             var fixedBody = Vector.BitwiseOr(Vector.Equals(Vector.AsVectorInt32(l.FlagA), Vector<int>.Zero),
                 Vector.Equals(Vector.AsVectorInt32(l.FlagB), Vector<int>.Zero));
-            var rate = Vector.ConditionalSelect(fixedBody, soft.FixedBiasRate, soft.BiasRate);
-            var massScale = Vector.ConditionalSelect(fixedBody, soft.FixedMassScale, soft.MassScale);
-            var impulseScale = Vector.ConditionalSelect(fixedBody, soft.FixedImpulseScale, soft.ImpulseScale);
+            var rate = WideVector3.Select(fixedBody, soft.FixedBiasRate, soft.BiasRate);
+            var massScale = WideVector3.Select(fixedBody, soft.FixedMassScale, soft.MassScale);
+            var impulseScale = WideVector3.Select(fixedBody, soft.FixedImpulseScale, soft.ImpulseScale);
             Vector<int> loaded = w.Loaded;
-            Vector<int> first = SolvePair(ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, 1, 2, w.Normal, drift, inverseStep, maxPush,
-                rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn0, out Vector<float> vn1, ref l);
-            Vector<int> first2 = SolvePair(ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, 4, 8, w.Normal, drift, inverseStep, maxPush,
-                rate, massScale, impulseScale, useBias, ref loaded, out Vector<float> vn2, out Vector<float> vn3, ref l);
+            // The rows' bias and softness hang on the separations only: all four before the
+            // velocity-dependent part (which keeps SolvePair's arguments few enough to inline).
+            Terms(s0, w.K11a, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias0, out Vector<float> gamma0);
+            Terms(s1, w.K22a, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias1, out Vector<float> gamma1);
+            Terms(s2, w.K11b, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias2, out Vector<float> gamma2);
+            Terms(s3, w.K22b, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias3, out Vector<float> gamma3);
+            Vector<int> first = SolvePair(ref w.P0, ref w.P1, w.K11a, w.K12a, w.K22a, 1, 2, w.Normal, bias0, gamma0, bias1, gamma1,
+                ref loaded, out Vector<float> vn0, out Vector<float> vn1, ref l);
+            Vector<int> first2 = SolvePair(ref w.P2, ref w.P3, w.K11b, w.K12b, w.K22b, 4, 8, w.Normal, bias2, gamma2, bias3, gamma3,
+                ref loaded, out Vector<float> vn2, out Vector<float> vn3, ref l);
             first = Vector.BitwiseOr(first, first2);
             if (!Vector.EqualsAll(first, Vector<int>.Zero))
             {
@@ -390,7 +444,7 @@ namespace Fulcrum.Dynamics
             Vector<float> new1 = old1 - w.FrictionMass1 * WideVector3.Dot(t1, dv);
             Vector<float> new2 = old2 - w.FrictionMass2 * WideVector3.Dot(t2, dv);
             Vector<float> len2 = new1 * new1 + new2 * new2;
-            Vector<float> scale = Vector.ConditionalSelect(Vector.GreaterThan(len2, maxFriction * maxFriction),
+            Vector<float> scale = WideVector3.Select(Vector.GreaterThan(len2, maxFriction * maxFriction),
                 maxFriction / Vector.SquareRoot(len2), Vector<float>.One);
             new1 *= scale;
             new2 *= scale;
@@ -419,7 +473,7 @@ namespace Fulcrum.Dynamics
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static void Tangents(in WideVector3 n, out WideVector3 t1, out WideVector3 t2)
         {
-            Vector<float> sign = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(n.Z, Vector<float>.Zero), Vector<float>.One, new Vector<float>(-1f));
+            Vector<float> sign = WideVector3.Select(Vector.GreaterThanOrEqual(n.Z, Vector<float>.Zero), Vector<float>.One, new Vector<float>(-1f));
             Vector<float> a = new Vector<float>(-1f) / (sign + n.Z);
             Vector<float> b = n.X * n.Y * a;
             t1 = new WideVector3 { X = Vector<float>.One + sign * n.X * n.X * a, Y = sign * b, Z = -sign * n.X };
@@ -430,25 +484,27 @@ namespace Fulcrum.Dynamics
         static void RecordImpact(ref Vector<float> approach, Vector<int> first, int bit, Vector<float> vn)
         {
             var mask = Vector.Equals(Vector.BitwiseAnd(first, new Vector<int>(bit)), new Vector<int>(bit));
-            approach = Vector.ConditionalSelect(mask, Vector.Max(vn, approach), approach);
+            approach = WideVector3.Select(mask, Vector.Max(vn, approach), approach);
         }
 
+        // A normal row's velocity bias and gamma = K impulseScale / massScale, the compliance the
+        // soft row adds to the block's diagonal (ContactSolver.Solve).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Terms(Vector<float> s, Vector<float> inverseStep, Vector<float> maxPush, Vector<float> rate, Vector<float> massScale,
-            Vector<float> impulseScale, bool useBias, out Vector<float> bias, out Vector<float> ms, out Vector<float> @is)
+        static void Terms(Vector<float> s, Vector<float> k, Vector<float> inverseStep, Vector<float> maxPush, Vector<float> rate, Vector<float> massScale,
+            Vector<float> impulseScale, bool useBias, out Vector<float> bias, out Vector<float> gamma)
         {
             var speculative = Vector.GreaterThan(s, Vector<float>.Zero);
             if (useBias)
             {
-                bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector.Max(rate * s, maxPush));
-                ms = Vector.ConditionalSelect(speculative, Vector<float>.One, massScale);
-                @is = Vector.ConditionalSelect(speculative, Vector<float>.Zero, impulseScale);
+                bias = WideVector3.Select(speculative, s * inverseStep, Vector.Max(rate * s, maxPush));
+                Vector<float> ms = WideVector3.Select(speculative, Vector<float>.One, massScale);
+                Vector<float> @is = WideVector3.Select(speculative, Vector<float>.Zero, impulseScale);
+                gamma = WideVector3.Select(Vector.GreaterThan(@is, Vector<float>.Zero), k * @is / ms, Vector<float>.Zero);
             }
             else
             {
-                bias = Vector.ConditionalSelect(speculative, s * inverseStep, Vector<float>.Zero);
-                ms = Vector<float>.One;
-                @is = Vector<float>.Zero;
+                bias = WideVector3.Select(speculative, s * inverseStep, Vector<float>.Zero);
+                gamma = Vector<float>.Zero;
             }
         }
 
@@ -456,45 +512,48 @@ namespace Fulcrum.Dynamics
         // load for the first time in this step (and sets them in loaded).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<int> SolvePair(ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22, int bit1, int bit2,
-            in WideVector3 n, Vector<float> drift, Vector<float> inverseStep, Vector<float> maxPush,
-            Vector<float> rate, Vector<float> massScale, Vector<float> impulseScale, bool useBias,
+            in WideVector3 n, Vector<float> bias1, Vector<float> gamma1, Vector<float> bias2, Vector<float> gamma2,
             ref Vector<int> loaded, out Vector<float> vn1, out Vector<float> vn2, ref Lanes l)
         {
-            Vector<float> s1 = p1.Separation + drift + WideVector3.Dot(l.DThetaB, p1.AngularB) - WideVector3.Dot(l.DThetaA, p1.AngularA);
-            Vector<float> s2 = p2.Separation + drift + WideVector3.Dot(l.DThetaB, p2.AngularB) - WideVector3.Dot(l.DThetaA, p2.AngularA);
-            Terms(s1, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias1, out Vector<float> ms1, out Vector<float> is1);
-            Terms(s2, inverseStep, maxPush, rate, massScale, impulseScale, useBias, out Vector<float> bias2, out Vector<float> ms2, out Vector<float> is2);
             Vector<float> zero = Vector<float>.Zero;
-            Vector<float> gamma1 = Vector.ConditionalSelect(Vector.GreaterThan(is1, zero), k11 * is1 / ms1, zero);
-            Vector<float> gamma2 = Vector.ConditionalSelect(Vector.GreaterThan(is2, zero), k22 * is2 / ms2, zero);
 
             Vector<float> a1 = p1.Impulse, a2 = p2.Impulse;
-            vn1 = RowVelocity(p1.AngularA, p1.AngularB, n, l);
-            vn2 = RowVelocity(p2.AngularA, p2.AngularB, n, l);
+            // RowVelocity of both rows, their shared linear term n . (vB - vA) once.
+            WideVector3 dv = l.VB;
+            dv.Subtract(l.VA);
+            Vector<float> linearVn = WideVector3.Dot(n, dv);
+            vn1 = linearVn + WideVector3.Dot(p1.AngularB, l.WB) - WideVector3.Dot(p1.AngularA, l.WA);
+            vn2 = linearVn + WideVector3.Dot(p2.AngularB, l.WB) - WideVector3.Dot(p2.AngularA, l.WA);
             Vector<float> A11 = k11 + gamma1, A22 = k22 + gamma2, A12 = k12;
             Vector<float> b1 = vn1 + bias1 - (k11 * a1 + k12 * a2);
             Vector<float> b2 = vn2 + bias2 - (k12 * a1 + k22 * a2);
 
             // The four cases of the 2x2 LCP, each checked per lane; the first that holds wins.
             Vector<float> det = A11 * A22 - A12 * A12;
-            Vector<float> invDet = Vector.ConditionalSelect(Vector.Equals(det, zero), zero, Vector<float>.One / det);
+            Vector<float> invDet = WideVector3.Select(Vector.Equals(det, zero), zero, Vector<float>.One / det);
             Vector<float> c1x1 = -(A22 * b1 - A12 * b2) * invDet;
             Vector<float> c1x2 = -(A11 * b2 - A12 * b1) * invDet;
             var ok1 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c1x1, zero), Vector.GreaterThanOrEqual(c1x2, zero));
-            Vector<float> c2x1 = -b1 / A11;
-            var ok2 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c2x1, zero), Vector.GreaterThanOrEqual(A12 * c2x1 + b2, zero));
-            Vector<float> c3x2 = -b2 / A22;
-            var ok3 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c3x2, zero), Vector.GreaterThanOrEqual(A12 * c3x2 + b1, zero));
-            var ok4 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(b1, zero), Vector.GreaterThanOrEqual(b2, zero));
-            // No case holding (round-off only): the impulses stay.
-            Vector<float> x1 = Vector.ConditionalSelect(ok4, zero, a1);
-            Vector<float> x2 = Vector.ConditionalSelect(ok4, zero, a2);
-            x1 = Vector.ConditionalSelect(ok3, zero, x1);
-            x2 = Vector.ConditionalSelect(ok3, c3x2, x2);
-            x1 = Vector.ConditionalSelect(ok2, c2x1, x1);
-            x2 = Vector.ConditionalSelect(ok2, zero, x2);
-            x1 = Vector.ConditionalSelect(ok1, c1x1, x1);
-            x2 = Vector.ConditionalSelect(ok1, c1x2, x2);
+            Vector<float> x1 = c1x1, x2 = c1x2;
+            // Both points pushing in every lane (resting stacks, nearly always): the other cases
+            // cannot win, and their two divisions and eight selects are skipped.
+            if (!Vector.EqualsAll(ok1, new Vector<int>(-1)))
+            {
+                Vector<float> c2x1 = -b1 / A11;
+                var ok2 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c2x1, zero), Vector.GreaterThanOrEqual(A12 * c2x1 + b2, zero));
+                Vector<float> c3x2 = -b2 / A22;
+                var ok3 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(c3x2, zero), Vector.GreaterThanOrEqual(A12 * c3x2 + b1, zero));
+                var ok4 = Vector.BitwiseAnd(Vector.GreaterThanOrEqual(b1, zero), Vector.GreaterThanOrEqual(b2, zero));
+                // No case holding (round-off only): the impulses stay.
+                x1 = WideVector3.Select(ok4, zero, a1);
+                x2 = WideVector3.Select(ok4, zero, a2);
+                x1 = WideVector3.Select(ok3, zero, x1);
+                x2 = WideVector3.Select(ok3, c3x2, x2);
+                x1 = WideVector3.Select(ok2, c2x1, x1);
+                x2 = WideVector3.Select(ok2, zero, x2);
+                x1 = WideVector3.Select(ok1, c1x1, x1);
+                x2 = WideVector3.Select(ok1, c1x2, x2);
+            }
 
             Vector<float> d1 = x1 - a1, d2 = x2 - a2;
             p1.Impulse = x1;
@@ -513,11 +572,11 @@ namespace Fulcrum.Dynamics
             return first;
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void RefreshApproach(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void RefreshApproach(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
         {
             if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, false, false);
+            Gather(bodies, laneBodies, groupOffset, ref l, false, false);
             Refresh(w.P0, ref impact.P0, w.Loaded, 1, w.Normal, l);
             Refresh(w.P1, ref impact.P1, w.Loaded, 2, w.Normal, l);
             Refresh(w.P2, ref impact.P2, w.Loaded, 4, w.Normal, l);
@@ -529,14 +588,14 @@ namespace Fulcrum.Dynamics
 
         static void Refresh(in WidePoint p, ref WideImpactPoint i, Vector<int> loaded, int bit, in WideVector3 n, in Lanes l)
         {
-            i.RelativeVelocity = Vector.ConditionalSelect(IsLoaded(loaded, bit), i.RelativeVelocity, RowVelocity(p.AngularA, p.AngularB, n, l));
+            i.RelativeVelocity = WideVector3.Select(IsLoaded(loaded, bit), i.RelativeVelocity, RowVelocity(p.AngularA, p.AngularB, n, l));
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void ApplyRestitution(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold)
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void ApplyRestitution(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold, ref Lanes l)
         {
             if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, out Lanes l, true, false);
+            Gather(bodies, laneBodies, groupOffset, ref l, true, false);
             var limit = new Vector<float>(-threshold);
             Restitute(ref w.P0, impact.P0, impact.Restitution, w.Loaded, 1, w.Normal, limit, ref l);
             Restitute(ref w.P1, impact.P1, impact.Restitution, w.Loaded, 2, w.Normal, limit, ref l);
@@ -557,7 +616,7 @@ namespace Fulcrum.Dynamics
             Vector<float> vn = RowVelocity(p.AngularA, p.AngularB, n, l);
             Vector<float> old = p.Impulse;
             Vector<float> total = Vector.Max(old - i.EffectiveMass * (vn + e * i.RelativeVelocity), zero);
-            total = Vector.ConditionalSelect(active, total, old);
+            total = WideVector3.Select(active, total, old);
             p.Impulse = total;
             Vector<float> d = total - old;
             Apply(WideVector3.Scale(n, d), WideVector3.Scale(p.AngularA, d), WideVector3.Scale(p.AngularB, d), ref l);

@@ -10,7 +10,7 @@ namespace Fulcrum.Dynamics
     /// first pair, 2-3 the second. Rows keep their angular Jacobians only: the angular velocity
     /// change per unit impulse, I^-1 (r x d), is recomputed in each pass from the gathered inverse
     /// inertia, as Bepu does, because streaming it costs more than the multiply (the passes are
-    /// bound by the bytes they read: 220 bytes a manifold, against 540 with those terms stored).
+    /// bound by the bytes they read: 240 bytes a manifold, against 540 with those terms stored).
     /// The inverse masses and the softness of the normal rows follow from the gathered bodies too.
     /// </summary>
     internal struct WideContact

@@ -12,6 +12,8 @@ namespace Fulcrum.Dynamics
         public Vector<float> Separation;
         /// <summary>Accumulated normal impulse, N s.</summary>
         public Vector<float> Impulse;
+        /// <summary>Separation at the pose of the current substep, m: set by the warm start for that substep's biased passes.</summary>
+        public Vector<float> Current;
     }
 }
 #endif
