@@ -48,6 +48,12 @@ namespace Fulcrum.Collision
             tree.DestroyProxy(key >> 1);
         }
 
+        /// <summary>Sizes the queue of moved proxies for <paramref name="proxies"/> proxies.</summary>
+        public void Reserve(int proxies)
+        {
+            if (_moved.Length < proxies) Array.Resize(ref _moved, proxies);
+        }
+
         /// <summary>Gives a proxy a new fat box and queues it for a pair search.</summary>
         public void MoveProxy(int key, in Aabb fatBox)
         {

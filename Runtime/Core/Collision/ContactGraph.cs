@@ -115,6 +115,22 @@ namespace Fulcrum.Collision
             for (int i = old; i < _shapeHead.Length; i++) _shapeHead[i] = -1;
         }
 
+        /// <summary>Sizes the pools for <paramref name="contacts"/> contacts and <paramref name="manifolds"/> manifolds.</summary>
+        public void Reserve(int contacts, int manifolds)
+        {
+            while (Contacts.Length < contacts) GrowContacts();
+            _map.Reserve(contacts);
+            if (Manifolds.Length < manifolds)
+            {
+                Array.Resize(ref Manifolds, manifolds);
+                Array.Resize(ref ManifoldNext, manifolds);
+                Array.Resize(ref LocalNormal, manifolds);
+                Array.Resize(ref LocalPointA, 4 * manifolds);
+                Array.Resize(ref LocalPointB, 4 * manifolds);
+                Array.Resize(ref SeparationOffset, 4 * manifolds);
+            }
+        }
+
         /// <summary>Takes a manifold from the pool (its contents are garbage).</summary>
         public int AllocateManifold()
         {

@@ -33,6 +33,12 @@ namespace Fulcrum.Collision
         /// <summary>Manifold <paramref name="k"/> of this step, in the pool.</summary>
         internal ref ContactManifold this[int k] => ref Pool[Source[k]];
 
+        /// <summary>Sizes the list for <paramref name="manifolds"/> manifolds.</summary>
+        internal void Reserve(int manifolds)
+        {
+            if (Source.Length < manifolds) Array.Resize(ref Source, manifolds);
+        }
+
         /// <summary>Appends pooled manifold <paramref name="source"/>.</summary>
         internal void Add(int source)
         {

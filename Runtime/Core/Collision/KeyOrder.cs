@@ -15,6 +15,16 @@ namespace Fulcrum.Collision
         int[] _sorted = new int[64];
         int _count = -1;
 
+        /// <summary>Sizes the remembered order for <paramref name="n"/> items.</summary>
+        public void Reserve(int n)
+        {
+            if (_keys.Length >= n) return;
+            _keys = new ulong[n];
+            _arrived = new int[n];
+            _sorted = new int[n];
+            _count = -1;
+        }
+
         /// <summary>
         /// Reorders items[0, n) by keys[0, n) ascending. Keys are sorted too when a sort runs,
         /// and left in arrival order when the remembered order is reused.

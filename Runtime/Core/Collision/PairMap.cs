@@ -90,6 +90,12 @@ namespace Fulcrum.Collision
             return true;
         }
 
+        /// <summary>Grows the table so that <paramref name="pairs"/> pairs fit without growing again.</summary>
+        public void Reserve(int pairs)
+        {
+            while (2 * pairs > _keys.Length) Grow();
+        }
+
         void Grow()
         {
             ulong[] oldKeys = _keys;

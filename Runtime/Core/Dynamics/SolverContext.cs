@@ -134,6 +134,46 @@ namespace Fulcrum.Dynamics
             }
         }
 
+        /// <summary>
+        /// Sizes the per-step arrays for up to <paramref name="bodies"/> solver bodies (body
+        /// slots below that), <paramref name="manifolds"/> contact manifolds and
+        /// <paramref name="joints"/> joints, so steps within those counts allocate nothing.
+        /// </summary>
+        public void Reserve(int bodies, int manifolds, int joints)
+        {
+            int b = bodies + 1;
+            if (_indexOfSlot.Length < b) Array.Resize(ref _indexOfSlot, b);
+            if (Bodies.Length < b)
+            {
+                Array.Resize(ref Bodies, b);
+                Array.Resize(ref BodySlot, b);
+                Array.Resize(ref _startCenter, b);
+                Array.Resize(ref _startRotation, b);
+                Array.Resize(ref _colorMask, b);
+            }
+            if (_color.Length < manifolds + joints) _color = new int[manifolds + joints];
+            if (Contacts.Length < manifolds) Contacts = new ContactConstraint[manifolds];
+            if (Points.Length < 4 * manifolds) Points = new ContactConstraintPoint[4 * manifolds];
+            if (JointOrder.Length < joints) JointOrder = new int[joints];
+            if (_scalarContacts.Length < manifolds) _scalarContacts = new int[manifolds];
+#if NET
+            if (_rejected.Length < manifolds) _rejected = new int[manifolds];
+            // Each colour's last group may be padded: at most one group per colour more.
+            int width = ContactSolverWide.Width;
+            int groups = (manifolds + width - 1) / width + Buckets;
+            int lanes = groups * width;
+            if (_wide.Length < groups)
+            {
+                _wide = new WideContact[groups];
+                _wideImpact = new WideImpact[groups];
+            }
+            if (_wideManifold.Length < lanes) _wideManifold = new int[lanes];
+            if (_wideBodies.Length < 2 * lanes) _wideBodies = new int[2 * lanes];
+            if (_wideSlots.Length < 4 * lanes) _wideSlots = new int[4 * lanes];
+            if (_wideSource.Length < lanes) _wideSource = new int[lanes];
+#endif
+        }
+
         /// <summary>The solver index of a body slot (0 for the fixed body and the world, -1).</summary>
         public int IndexOf(int slot) => slot < 0 ? 0 : _indexOfSlot[slot];
 

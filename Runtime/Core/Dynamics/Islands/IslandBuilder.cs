@@ -55,6 +55,15 @@ namespace Fulcrum.Dynamics
             for (int i = old; i < n; i++) SleepNext[i] = -1;
         }
 
+        /// <summary>Sizes the step arrays for <paramref name="bodies"/> body slots, <paramref name="manifolds"/> manifolds and <paramref name="joints"/> joints.</summary>
+        public void Reserve(int bodies, int manifolds, int joints)
+        {
+            EnsureBodies(bodies);
+            if (AwakeBodies.Length < bodies) AwakeBodies = new int[bodies];
+            if (Manifolds.Length < manifolds) Manifolds = new int[manifolds];
+            if (Joints.Length < joints) Joints = new int[joints];
+        }
+
         /// <summary>Wakes body <paramref name="slot"/> and, if it sleeps in an island, the whole island.</summary>
         public void WakeIsland(BodyStorage b, int slot)
         {

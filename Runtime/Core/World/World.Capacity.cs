@@ -1,0 +1,61 @@
+using System;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum
+{
+    public sealed partial class World
+    {
+        /// <summary>
+        /// Sizes the world's per-step buffers for up to <paramref name="bodies"/> bodies (with
+        /// one shape each) and <paramref name="contactPairs"/> shape pairs whose fattened
+        /// bounds overlap (touching or near: about 4 per box in a pyramid, up to 16 in a dense
+        /// pile of tilted boxes while it falls), so that a scene growing into those counts, such as a pile collapsing,
+        /// allocates nothing inside <see cref="Step"/>; the buffers otherwise double as counts
+        /// first rise (as Jolt's <c>PhysicsSystem.Init</c> limits and Bepu's initial allocation
+        /// sizes work). Manifolds are planned for the smaller of the pairs and 4 per body.
+        /// Counts already reached are kept; nothing shrinks.
+        /// </summary>
+        /// <exception cref="ArgumentException">A count is negative.</exception>
+        public void Reserve(int bodies, int contactPairs)
+        {
+            if (bodies < 0) throw new ArgumentException($"bodies must be >= 0, got {bodies}.", nameof(bodies));
+            if (contactPairs < 0) throw new ArgumentException($"contactPairs must be >= 0, got {contactPairs}.", nameof(contactPairs));
+            if (_inStep) throw new InvalidOperationException("Reserve cannot be called during Step.");
+            // Slots, not live counts: every array below is indexed by slot.
+            int slots = Math.Max(bodies, Bodies.SlotCount) + 1;
+            int pairs = Math.Max(contactPairs, ContactGraph.Count);
+            // Touching pairs (one manifold each when convex; meshes may have up to four, which
+            // this does not plan for): a box in a pyramid touches about 3.6 others.
+            int manifolds = Math.Max(ContactGraph.Count, Math.Min(pairs, 4 * Math.Max(bodies, 1)));
+            ContactGraph.Reserve(pairs, manifolds);
+            Contacts.Reserve(manifolds);
+            BroadPhase.Reserve(Math.Max(bodies, Shapes.SlotCount));
+            _contactOrder.Reserve(pairs);
+            _eventOrder.Reserve(pairs);
+            ReserveSorting(pairs);
+            ReserveEvents(pairs);
+            Joints.EnsureBodies(slots);
+            _islands.Reserve(slots, manifolds, Joints.ActiveCount);
+            _solverContext.Reserve(slots, manifolds, Joints.ActiveCount);
+            if (_freeBodies.Length < slots) _freeBodies = new int[slots];
+        }
+
+        void ReserveSorting(int pairs)
+        {
+            if (_sortKeys.Length >= pairs) return;
+            Array.Resize(ref _sortKeys, pairs);
+            Array.Resize(ref _sortItems, pairs);
+        }
+
+        void ReserveEvents(int pairs)
+        {
+            if (_stepEvents.Length < pairs)
+            {
+                Array.Resize(ref _stepEvents, pairs);
+                Array.Resize(ref _stepEventKeys, pairs);
+                Array.Resize(ref _stepEventOrder, pairs);
+            }
+            if (_events.Length < pairs) Array.Resize(ref _events, pairs);
+        }
+    }
+}
