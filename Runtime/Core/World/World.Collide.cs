@@ -238,8 +238,8 @@ namespace Fulcrum
                     {
                         TakeNarrowResult(c, awakeA, awakeB);
                         AddToSort(ct.Key, c);
-                        if (!awakeA && Bodies.Type[bodyA] == BodyType.Dynamic) { Wake(bodyA); _anyWoken = true; }
-                        if (!awakeB && Bodies.Type[bodyB] == BodyType.Dynamic) { Wake(bodyB); _anyWoken = true; }
+                        WakeSleeper(bodyA, awakeA);
+                        WakeSleeper(bodyB, awakeB);
                         return true;
                     }
                 }
@@ -277,15 +277,27 @@ namespace Fulcrum
                 AddToSort(ct.Key, c);
                 Measure(ct);
             }
-            if (reuse && ct.ManifoldCount > 0) RememberManifolds(ref ct, speculative, poseA, poseB);
+            // A pair that can approach by more than the reuse bound's half margin in this step
+            // will have moved too far to reuse next step: storing its points would be wasted.
+            if (reuse && ct.ManifoldCount > 0 && speculative <= 1.5f * SpeculativeBase)
+                RememberManifolds(ref ct, speculative, poseA, poseB);
             else ct.Flags &= ~ContactFlags.Reusable;
 
             if (ct.ManifoldCount > 0)
             {
-                if (!awakeA && Bodies.Type[bodyA] == BodyType.Dynamic) { Wake(bodyA); _anyWoken = true; }
-                if (!awakeB && Bodies.Type[bodyB] == BodyType.Dynamic) { Wake(bodyB); _anyWoken = true; }
+                WakeSleeper(bodyA, awakeA);
+                WakeSleeper(bodyB, awakeB);
             }
             return true;
+        }
+
+        // A sleeping dynamic body that a listed contact touches wakes (its pairs are then run by
+        // UpdateContacts' second pass).
+        void WakeSleeper(int body, bool awake)
+        {
+            if (awake || Bodies.Type[body] != BodyType.Dynamic) return;
+            Wake(body);
+            _anyWoken = true;
         }
 
         // Lists the contacts whose pair function the serial pass would run with the awake
