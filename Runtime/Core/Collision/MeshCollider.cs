@@ -30,7 +30,7 @@ namespace Fulcrum.Collision
             public bool Visit(int proxyId, int triangle)
             {
                 Mesh.GetTriangle(triangle, out Vector3 a, out Vector3 b, out Vector3 c);
-                if (!Bounds.Overlaps(new Aabb(Vector3.Min(a, Vector3.Min(b, c)), Vector3.Max(a, Vector3.Max(b, c))))) return true;
+                if (!Bounds.Overlaps(Aabb.OfTriangle(a, b, c))) return true;
                 int before = Output.PointCount;
                 TriangleContact(Convex, Mesh, triangle, Output);
                 uint salt = (uint)triangle * 0x9E3779B1u;

@@ -28,7 +28,7 @@ namespace Fulcrum.Collision
             for (int t = 0; t < n; t++)
             {
                 Vector3 a = vertices[indices[3 * t]], b = vertices[indices[3 * t + 1]], c = vertices[indices[3 * t + 2]];
-                boxes[t] = new Aabb(Vector3.Min(a, Vector3.Min(b, c)), Vector3.Max(a, Vector3.Max(b, c)));
+                boxes[t] = Aabb.OfTriangle(a, b, c);
                 centers[t] = (a + b + c) / 3f;
             }
             Triangles = new int[n];

@@ -18,6 +18,10 @@ namespace Fulcrum.Mathematics
             Max = max;
         }
 
+        /// <summary>The tightest box around the triangle (a, b, c).</summary>
+        public static Aabb OfTriangle(Vector3 a, Vector3 b, Vector3 c) =>
+            new Aabb(Vector3.Min(a, Vector3.Min(b, c)), Vector3.Max(a, Vector3.Max(b, c)));
+
         /// <summary>A box around <paramref name="center"/> with half-size <paramref name="extents"/>.</summary>
         public static Aabb FromCenterExtents(Vector3 center, Vector3 extents) => new Aabb(center - extents, center + extents);
 

@@ -41,7 +41,7 @@ namespace Fulcrum.SoftBodies
             public bool Visit(int proxyId, int triangle)
             {
                 Mesh.GetTriangle(triangle, out Vector3 a, out Vector3 b, out Vector3 c);
-                if (!Box.Overlaps(new Aabb(Vector3.Min(a, Vector3.Min(b, c)), Vector3.Max(a, Vector3.Max(b, c))))) return true;
+                if (!Box.Overlaps(Aabb.OfTriangle(a, b, c))) return true;
                 Vector3 n = Mesh.Normals[triangle];
                 // Already behind the one-sided triangle when the step starts: the back side.
                 if (Vector3.Dot(n, Start - a) < -Radius) return true;

@@ -97,7 +97,7 @@ namespace Fulcrum.SoftBodies
             for (int t = 0; t < tris.Length; t += 3)
             {
                 Vector3 a = xt[tris[t]], b = xt[tris[t + 1]], c = xt[tris[t + 2]];
-                var box = new Aabb(Vector3.Min(a, Vector3.Min(b, c)), Vector3.Max(a, Vector3.Max(b, c))).Expanded(reach);
+                var box = Aabb.OfTriangle(a, b, c).Expanded(reach);
                 if (!box.Overlaps(region)) continue;
                 Vector3 n = Vector3.Cross(b - a, c - a);
                 float area2 = n.Length();
