@@ -52,9 +52,20 @@ namespace Fulcrum.Tests.Collision
         {
             World plain = Pile(6, 6, out int boxes);
             long grown = Collapse(plain, out int growingSteps);
-            World reserved = Pile(6, 6, out _);
-            reserved.Reserve(boxes + 1, 8 * boxes);
-            long bytes = Collapse(reserved, out _);
+            // The tiered JIT may allocate a few bytes once on this thread while it promotes the
+            // collapse's hot methods (seen: 160 B, only when other tests ran first; none with
+            // DOTNET_TieredCompilation=0). A buffer that grows inside Step allocates in every
+            // fresh world, so two reserved worlds collapse in turn and the smaller count is the
+            // one that says whether Step grows anything.
+            World reserved = null!;
+            long bytes = long.MaxValue;
+            for (int attempt = 0; attempt < 2; attempt++)
+            {
+                System.Threading.Thread.Sleep(150); // let background tier-1 compiles finish
+                reserved = Pile(6, 6, out _);
+                reserved.Reserve(boxes + 1, 8 * boxes);
+                bytes = Math.Min(bytes, Collapse(reserved, out _));
+            }
             TestContext.Out.WriteLine($"{boxes} boxes: {grown} B in {growingSteps} steps without Reserve, {bytes} B with; {reserved.Contacts.ManifoldCount} manifolds at the end");
             Assert.That(grown, Is.GreaterThan(0), "without Reserve the buffers grow inside Step (what this test guards against)");
             Assert.That(bytes, Is.EqualTo(0));
