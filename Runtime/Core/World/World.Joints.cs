@@ -89,7 +89,7 @@ namespace Fulcrum
             if (!def.CollideConnected && a >= 0 && b >= 0) DestroyContactsBetween(a, b);
             if (a >= 0) Wake(a);
             if (b >= 0) Wake(b);
-            return new JointHandle(slot, Joints.Generation[slot]);
+            return new JointHandle(slot, Joints.Generation[slot], Id);
         }
 
         static void Direction(Vector3 v, string name)
@@ -225,14 +225,15 @@ namespace Fulcrum
         }
 
         /// <summary>True when the handle names a live joint of this world.</summary>
-        public bool IsValid(JointHandle joint) => Joints.IsLive(joint);
+        public bool IsValid(JointHandle joint) => joint.WorldId == Id && Joints.IsLive(joint);
 
         internal int JointSlot(JointHandle joint)
         {
+            if (!joint.IsNone && joint.WorldId != Id) throw ForeignHandle(joint.ToString(), joint.WorldId);
             if (!Joints.IsLive(joint))
                 throw new StaleHandleException(joint.IsNone
                     ? "The joint handle is None."
-                    : $"{joint} does not name a live joint: it was destroyed, or belongs to another world.");
+                    : $"{joint} does not name a live joint: it was destroyed, or was never issued by this world.");
             return joint.Index;
         }
 
@@ -320,9 +321,9 @@ namespace Fulcrum
                 if (_jointBreakCount == _jointBreaks.Length) Array.Resize(ref _jointBreaks, _jointBreaks.Length * 2);
                 _jointBreaks[_jointBreakCount++] = new JointBreakEvent
                 {
-                    Joint = new JointHandle(slot, Joints.Generation[slot]),
-                    BodyA = j.BodyA < 0 ? BodyHandle.None : new BodyHandle(j.BodyA, Bodies.Generation[j.BodyA]),
-                    BodyB = j.BodyB < 0 ? BodyHandle.None : new BodyHandle(j.BodyB, Bodies.Generation[j.BodyB]),
+                    Joint = new JointHandle(slot, Joints.Generation[slot], Id),
+                    BodyA = j.BodyA < 0 ? BodyHandle.None : new BodyHandle(j.BodyA, Bodies.Generation[j.BodyA], Id),
+                    BodyB = j.BodyB < 0 ? BodyHandle.None : new BodyHandle(j.BodyB, Bodies.Generation[j.BodyB], Id),
                     Force = j.Force,
                     Torque = j.Torque,
                     Stress = j.Stress,

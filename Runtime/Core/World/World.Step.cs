@@ -15,8 +15,8 @@ namespace Fulcrum
         /// </summary>
         public void Step(float dt)
         {
-            if (!(dt > 0 && float.IsFinite(dt)))
-                throw new ArgumentException($"dt must be finite and > 0, got {dt}.", nameof(dt));
+            if (!(dt >= Limits.MinTimeStep && dt <= Limits.MaxTimeStep))
+                throw new ArgumentException($"dt must be between {Limits.MinTimeStep:G} and {Limits.MaxTimeStep:G} s (Limits.MinTimeStep/MaxTimeStep), got {dt}.", nameof(dt));
             ThrowIfInStep();
             _inStep = true;
             try
