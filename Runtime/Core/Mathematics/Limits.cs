@@ -24,6 +24,12 @@ namespace Fulcrum
         /// <summary>Largest size of a shape (radius, half extent, half height, hull or mesh coordinate, compound offset), m.</summary>
         public const float MaxShapeSize = 1e5f;
 
+        /// <summary>
+        /// Smallest size of a sphere or capsule radius or a box half extent, m (0.1 mm): below it
+        /// the mass and inertia formulas (r^5) underflow to zero or denormals.
+        /// </summary>
+        public const float MinShapeSize = 1e-4f;
+
         /// <summary>Smallest mass of a dynamic body (given or from its shapes), kg: below it 1/m overflows the solver's products.</summary>
         public const float MinMass = 1e-6f;
 

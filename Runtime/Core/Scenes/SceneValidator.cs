@@ -538,15 +538,16 @@ namespace Fulcrum.Scenes
 
             void Size(float v, string path)
             {
-                if (Positive(v, path) && v > Limits.MaxShapeSize)
-                    Error(path, $"must be at most {F(Limits.MaxShapeSize)} m (Limits.MaxShapeSize), got {F(v)}");
+                if (Positive(v, path) && (v > Limits.MaxShapeSize || v < Limits.MinShapeSize))
+                    Error(path, $"must be in [{F(Limits.MinShapeSize)}, {F(Limits.MaxShapeSize)}] m (Limits.MinShapeSize/MaxShapeSize), got {F(v)}");
             }
 
             void Size(Vector3 v, string path)
             {
                 Positive(v, path);
-                if (Mathematics.Validate.IsFinite(v) && System.Math.Max(v.X, System.Math.Max(v.Y, v.Z)) > Limits.MaxShapeSize)
-                    Error(path, $"must be at most {F(Limits.MaxShapeSize)} m on every axis (Limits.MaxShapeSize), got {V(v)}");
+                if (Mathematics.Validate.IsFinite(v) && v.X > 0 && v.Y > 0 && v.Z > 0
+                    && (System.Math.Max(v.X, System.Math.Max(v.Y, v.Z)) > Limits.MaxShapeSize || System.Math.Min(v.X, System.Math.Min(v.Y, v.Z)) < Limits.MinShapeSize))
+                    Error(path, $"must be in [{F(Limits.MinShapeSize)}, {F(Limits.MaxShapeSize)}] m on every axis (Limits.MinShapeSize/MaxShapeSize), got {V(v)}");
             }
 
             bool Positive(float v, string path)

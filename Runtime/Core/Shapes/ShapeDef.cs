@@ -70,6 +70,11 @@ namespace Fulcrum
                 Aabb box = Geometry.ComputeAabb(Pose.Identity);
                 Vector3 far = Vector3.Max(Vector3.Abs(box.Min), Vector3.Abs(box.Max));
                 float size = System.Math.Max(far.X, System.Math.Max(far.Y, far.Z));
+                float thinnest = Geometry.Type == ShapeType.Sphere || Geometry.Type == ShapeType.Capsule ? Geometry.Radius
+                    : Geometry.Type == ShapeType.Box ? System.Math.Min(Geometry.HalfExtents.X, System.Math.Min(Geometry.HalfExtents.Y, Geometry.HalfExtents.Z))
+                    : Limits.MinShapeSize;
+                if (!(thinnest >= Limits.MinShapeSize))
+                    throw new System.ArgumentException($"shape.Geometry ({Geometry.Type}) is {thinnest:G} m thin; at least {Limits.MinShapeSize:G} m (Limits.MinShapeSize).", "Geometry");
                 if (!(size <= Limits.MaxShapeSize))
                     throw new System.ArgumentException($"shape.Geometry ({Geometry.Type}) reaches {size:G} m from its origin; at most {Limits.MaxShapeSize:G} m (Limits.MaxShapeSize).", "Geometry");
             }
