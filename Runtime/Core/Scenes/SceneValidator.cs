@@ -58,14 +58,14 @@ namespace Fulcrum.Scenes
                     Error(P(root, "format"), $"must be \"{SceneDocument.CurrentFormat}\", got {JsonPath.Quote(doc.Format ?? "")}");
                 if (Finite(doc.Gravity, P(root, "gravity")) && Limits.Length(doc.Gravity) > Limits.MaxGravity)
                     Error(P(root, "gravity"), $"must have magnitude at most {F(Limits.MaxGravity)} m/s^2 (Limits.MaxGravity), got {V(doc.Gravity)}");
-                InRange(doc.Timestep, Limits.MinTimeStep, Limits.MaxTimeStep, P(root, "timestep"));
+                if (Positive(doc.Timestep, P(root, "timestep"))) Upto(doc.Timestep, Limits.MinTimeStep, Limits.MaxTimeStep, P(root, "timestep"), "Limits.MinTimeStep/MaxTimeStep");
                 string solver = P(root, "solver");
                 if (doc.Solver == null) Error(solver, "must not be null");
                 else
                 {
                     if (doc.Solver.Type != SolverType.Pgs && doc.Solver.Type != SolverType.Tgs) Error(P(solver, "type"), "must be pgs or tgs");
-                    IntInRange(doc.Solver.Iterations, 1, Limits.MaxIterations, P(solver, "iterations"));
-                    IntInRange(doc.Solver.Substeps, 1, Limits.MaxSubsteps, P(solver, "substeps"));
+                    if (AtLeast(doc.Solver.Iterations, 1, P(solver, "iterations"))) IntInRange(doc.Solver.Iterations, 1, Limits.MaxIterations, P(solver, "iterations"));
+                    if (AtLeast(doc.Solver.Substeps, 1, P(solver, "substeps"))) IntInRange(doc.Solver.Substeps, 1, Limits.MaxSubsteps, P(solver, "substeps"));
                     if (doc.Solver.ContactHertz is float contactHertz) Positive(contactHertz, P(solver, "contactHertz"));
                     if (doc.Solver.JointHertz is float jointHertz) Positive(jointHertz, P(solver, "jointHertz"));
                     if (doc.Solver.ManifoldReuse is float reuse) NonNegative(reuse, P(solver, "manifoldReuse"));
@@ -127,7 +127,7 @@ namespace Fulcrum.Scenes
                 if (mass is float kg)
                 {
                     if (type != BodyType.Dynamic) Error(P(path, "mass"), $"a {SceneNames.Of(type)} body has no mass: remove it or make the body dynamic");
-                    else InRange(kg, Limits.MinMass, Limits.MaxMass, P(path, "mass"));
+                    else if (Positive(kg, P(path, "mass"))) Upto(kg, Limits.MinMass, Limits.MaxMass, P(path, "mass"), "Limits.MinMass/MaxMass");
                 }
             }
 
@@ -143,7 +143,7 @@ namespace Fulcrum.Scenes
                         break;
                     case SceneCapsule capsule:
                         Size(capsule.Radius, P(path, "radius"));
-                        InRange(capsule.HalfHeight, 0, Limits.MaxShapeSize, P(path, "halfHeight"));
+                        if (NonNegative(capsule.HalfHeight, P(path, "halfHeight"))) Upto(capsule.HalfHeight, 0, Limits.MaxShapeSize, P(path, "halfHeight"), "Limits.MaxShapeSize");
                         break;
                     case SceneConvex convex:
                         if (convex.Points.Count < 4) Error(P(path, "points"), $"a convex hull needs at least 4 points, got {convex.Points.Count}");
@@ -156,7 +156,7 @@ namespace Fulcrum.Scenes
                         if (child) Error(P(path, "type"), "a plane cannot be a compound child");
                         else if (!isStatic) Error(P(path, "type"), "a plane can only be the shape of a static body");
                         if (Finite(plane.Normal, P(path, "normal")) && !(plane.Normal.Length() > 1e-6f)) Error(P(path, "normal"), "must be non-zero");
-                        InRange(plane.Offset, -Limits.MaxPosition, Limits.MaxPosition, P(path, "offset"));
+                        if (Finite(plane.Offset, P(path, "offset"))) Upto(plane.Offset, -Limits.MaxPosition, Limits.MaxPosition, P(path, "offset"), "Limits.MaxPosition");
                         break;
                     case SceneMesh mesh:
                         if (child) Error(P(path, "type"), "a mesh cannot be a compound child");
@@ -208,7 +208,7 @@ namespace Fulcrum.Scenes
                     if (g.Name != null && g.Name.Length == 0) Error(P(path, "name"), "must be a non-empty name (or left out)");
                     Coordinate(g.At, P(path, "at"));
                     Size(g.Size, P(path, "size"));
-                    InRange(g.Spacing, 0, Limits.MaxShapeSize, P(path, "spacing"));
+                    if (NonNegative(g.Spacing, P(path, "spacing"))) Upto(g.Spacing, 0, Limits.MaxShapeSize, P(path, "spacing"), "Limits.MaxShapeSize");
                     MassAndMaterial(g.Mass, g.Material, BodyType.Dynamic, path);
                     switch (g)
                     {
@@ -217,7 +217,7 @@ namespace Fulcrum.Scenes
                         case SceneChain c: AtLeast(c.Count, 1, P(path, "count")); break;
                         case SceneDominoes d:
                             AtLeast(d.Count, 1, P(path, "count"));
-                            InRange(d.TipSpeed, -Limits.MaxInputSpeed, Limits.MaxInputSpeed, P(path, "tipSpeed"));
+                            if (Finite(d.TipSpeed, P(path, "tipSpeed"))) Upto(d.TipSpeed, -Limits.MaxInputSpeed, Limits.MaxInputSpeed, P(path, "tipSpeed"), "Limits.MaxInputSpeed");
                             break;
                         case SceneWall w:
                             if (AtLeast(w.Count, 1, P(path, "count")) && w.Staggered && w.Count < 2)
@@ -563,10 +563,18 @@ namespace Fulcrum.Scenes
                 Error(path, $"must be > 0 on every axis, got {V(v)}");
             }
 
-            void NonNegative(float v, string path)
+            bool NonNegative(float v, string path)
             {
-                if (float.IsFinite(v) && v >= 0) return;
+                if (float.IsFinite(v) && v >= 0) return true;
                 Error(path, $"must be >= 0, got {F(v)}");
+                return false;
+            }
+
+            // A value already known finite (and of the right sign) against a documented limit.
+            void Upto(float v, float lo, float hi, string path, string limit)
+            {
+                if (v >= lo && v <= hi) return;
+                Error(path, $"must be in [{F(lo)}, {F(hi)}] ({limit}), got {F(v)}");
             }
 
             void InRange(float v, float lo, float hi, string path)
