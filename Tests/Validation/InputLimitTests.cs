@@ -154,5 +154,21 @@ namespace Fulcrum.Tests.Validation
             Assert.That(worst, Is.LessThanOrEqualTo(400f * 1.05f));
             Assert.That(w.GetBody(box).AngularVelocity.Length(), Is.LessThanOrEqualTo(400f / radius * 1.001f));
         }
+
+        [Test]
+        public void Joint_inputs_that_overflow_are_refused_and_no_joint_is_made()
+        {
+            var w = new World();
+            BodyHandle a = Ball(w, Vector3.Zero);
+            BodyHandle c = Ball(w, new Vector3(2, 0, 0));
+            Assert.That(() => w.CreateJoint(JointDef.Ball(a, c, new Vector3(3e38f, 0, 0), Vector3.Zero)), Throws.ArgumentException.With.Message.Contains("joint.AnchorA"));
+            JointDef hinge = JointDef.Hinge(a, c, Vector3.Zero, Vector3.Zero, new Vector3(1e20f, 1e20f, 1e20f), Vector3.UnitX);
+            Assert.That(() => w.CreateJoint(hinge), Throws.ArgumentException.With.Message.Contains("joint.AxisA"));
+            JointDef motor = JointDef.Hinge(a, c, Vector3.Zero, Vector3.Zero, Vector3.UnitX, Vector3.UnitX);
+            motor.MotorSpeed = 3e38f;
+            motor.MaxMotorTorque = 10;
+            Assert.That(() => w.CreateJoint(motor), Throws.ArgumentException.With.Message.Contains("joint.MotorSpeed"));
+            Assert.That(w.JointCount, Is.EqualTo(0));
+        }
     }
 }
