@@ -84,5 +84,23 @@ namespace Fulcrum.Tests.Validation
             Assert.That(() => w.GetBody(new BodyHandle(ball.Index, ball.Generation)), Throws.TypeOf<StaleHandleException>().With.Message.Contains("no world id"));
             Assert.That(default(BodyHandle).IsNone, Is.True);
         }
+
+        [Test]
+        public void A_proxy_handle_from_another_bridge_is_refused_and_bridge_inputs_are_limited()
+        {
+            using var one = new Fulcrum.Components.PhysicsBridge();
+            using var two = new Fulcrum.Components.PhysicsBridge();
+            var a = new Fulcrum.Tests.Components.PhysicsBridgeTests.Thing("a", System.Numerics.Vector3.Zero);
+            var b = new Fulcrum.Tests.Components.PhysicsBridgeTests.Thing("b", System.Numerics.Vector3.Zero);
+            Fulcrum.Components.ProxyHandle pa = one.Register(a, BodyDef.Default, ShapeDef.Of(ShapeGeometry.Sphere(0.5f)));
+            Fulcrum.Components.ProxyHandle pb = two.Register(b, BodyDef.Default, ShapeDef.Of(ShapeGeometry.Sphere(0.5f)));
+            Assert.That(pa.Index, Is.EqualTo(pb.Index));
+            Assert.That(two.IsRegistered(pa), Is.False);
+            Assert.That(() => two.Unregister(pa), Throws.TypeOf<StaleHandleException>().With.Message.Contains("another").Or.Message.Contains("not this one"));
+            Assert.That(() => two.AddForce(pa, System.Numerics.Vector3.One), Throws.TypeOf<StaleHandleException>());
+            Assert.That(two.IsRegistered(pb), Is.True);
+            Assert.That(() => one.AddTorque(pa, new System.Numerics.Vector3(3e38f)), Throws.ArgumentException.With.Message.Contains("Limits.MaxForce"));
+            Assert.That(() => one.SetAngularVelocity(pa, new System.Numerics.Vector3(3e38f)), Throws.ArgumentException.With.Message.Contains("Limits.MaxInputSpeed"));
+        }
     }
 }
