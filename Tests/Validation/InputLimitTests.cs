@@ -170,5 +170,19 @@ namespace Fulcrum.Tests.Validation
             Assert.That(() => w.CreateJoint(motor), Throws.ArgumentException.With.Message.Contains("joint.MotorSpeed"));
             Assert.That(w.JointCount, Is.EqualTo(0));
         }
+
+        [Test]
+        public void A_static_body_whose_shapes_weigh_too_much_stays_static()
+        {
+            var w = new World();
+            BodyHandle slab = w.CreateBody(BodyDef.Static(Vector3.Zero));
+            ShapeDef dense = ShapeDef.Of(ShapeGeometry.Box(new Vector3(1e4f)));
+            dense.Density = 1e6f; // 8e18 kg: fine while static
+            w.AddShape(slab, dense);
+            Assert.That(() => w.SetBodyType(slab, BodyType.Dynamic), Throws.ArgumentException.With.Message.Contains("Limits.MinMass/MaxMass"));
+            Assert.That(w.GetBody(slab).Type, Is.EqualTo(BodyType.Static));
+            Assert.That(w.GetBody(slab).Mass, Is.EqualTo(0f));
+            Assert.That(() => w.Reserve(int.MaxValue, 0), Throws.ArgumentException.With.Message.Contains("Limits.MaxReserve"));
+        }
     }
 }

@@ -47,9 +47,10 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>
-        /// Scales v and w together so that no point within <paramref name="radius"/> of the centre
-        /// moves faster than <paramref name="maxSpeed"/> (|v| + |w| r &lt;= maxSpeed, a bound on
-        /// |v + w x r|), and caps |w| at <see cref="Limits.MaxAngularSpeed"/>. Lengths are taken
+        /// Caps |w| at <see cref="Limits.MaxAngularSpeed"/>, the centre's speed |v| at
+        /// <paramref name="maxSpeed"/>, then |w| so that no point within <paramref name="radius"/>
+        /// of the centre moves faster than <paramref name="maxSpeed"/> (|v| + |w| r &lt;= maxSpeed,
+        /// a bound on |v + w x r|): the spin gets what the centre leaves of the cap. Lengths are taken
         /// in double when the float square overflows, so a velocity of 3e38 is clamped to the
         /// cap, not zeroed.
         /// </summary>

@@ -71,6 +71,9 @@ namespace Fulcrum
         /// <summary>Most worker threads (<see cref="WorldSettings.Threads"/>).</summary>
         public const int MaxThreads = 64;
 
+        /// <summary>Largest count <see cref="World.Reserve"/> takes (bodies or contact pairs): 2^24, so that the buffers it sizes stay within 32-bit array lengths.</summary>
+        public const int MaxReserve = 1 << 24;
+
         /// <summary>Most points given to a convex hull (API and scene files); the hull keeps at most its own vertex cap of them.</summary>
         public const int MaxHullPoints = 10000;
 

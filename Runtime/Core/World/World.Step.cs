@@ -11,7 +11,8 @@ namespace Fulcrum
         /// Advances the world by <paramref name="dt"/> seconds (a fixed step: keep the
         /// accumulator in the caller, or use <see cref="FixedStepper"/>). Runs the stages of
         /// <see cref="StepStage"/> in order; a stage with no work returns at once.
-        /// Allocates nothing once the world is warm.
+        /// Allocates nothing once the world is warm. <paramref name="dt"/> must be in
+        /// [<see cref="Limits.MinTimeStep"/>, <see cref="Limits.MaxTimeStep"/>] (1e-6 to 1 s).
         /// </summary>
         public void Step(float dt)
         {
