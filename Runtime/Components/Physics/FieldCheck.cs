@@ -42,6 +42,20 @@ namespace Fulcrum.Components
                 throw new ArgumentException($"{owner}: {field} must have magnitude at most {Limits.MaxInputSpeed:G} (Limits.MaxInputSpeed), got {v}.", field);
         }
 
+        /// <summary>Throws unless <paramref name="v"/> is a mass in [<see cref="Limits.MinMass"/>, <see cref="Limits.MaxMass"/>].</summary>
+        public static void Mass(float v, object owner, string field)
+        {
+            if (!(float.IsFinite(v) && v >= Limits.MinMass && v <= Limits.MaxMass))
+                throw new ArgumentException($"{owner}: {field} must be between {Limits.MinMass:G} and {Limits.MaxMass:G} kg (Limits.MinMass/MaxMass), got {v}.", field);
+        }
+
+        /// <summary>Throws unless <paramref name="v"/> is a size in [<see cref="Limits.MinShapeSize"/>, <see cref="Limits.MaxShapeSize"/>] m.</summary>
+        public static void Size(float v, object owner, string field)
+        {
+            if (!(float.IsFinite(v) && v >= Limits.MinShapeSize && v <= Limits.MaxShapeSize))
+                throw new ArgumentException($"{owner}: {field} must be between {Limits.MinShapeSize:G} and {Limits.MaxShapeSize:G} m (Limits.MinShapeSize/MaxShapeSize), got {v}.", field);
+        }
+
         /// <summary>Throws unless <paramref name="v"/> is finite and &gt; 0.</summary>
         public static void Positive(float v, object owner, string field)
         {
