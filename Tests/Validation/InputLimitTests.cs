@@ -185,5 +185,16 @@ namespace Fulcrum.Tests.Validation
             Assert.That(w.GetBody(slab).Mass, Is.EqualTo(0f));
             Assert.That(() => w.Reserve(int.MaxValue, 0), Throws.ArgumentException.With.Message.Contains("Limits.MaxReserve"));
         }
+
+        [Test]
+        public void A_shape_lighter_than_the_minimum_mass_is_refused_even_beside_a_heavy_one()
+        {
+            var w = new World();
+            BodyHandle b = Ball(w, Vector3.Zero);
+            ShapeDef feather = ShapeDef.Of(ShapeGeometry.Sphere(0.01f));
+            feather.Density = 1e-30f; // 4e-36 kg: 1/m overflows once the ball is removed
+            Assert.That(() => w.AddShape(b, feather), Throws.ArgumentException.With.Message.Contains("this shape's mass"));
+            Assert.That(ShapeCount(w, b), Is.EqualTo(1));
+        }
     }
 }

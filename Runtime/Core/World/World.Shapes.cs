@@ -49,6 +49,10 @@ namespace Fulcrum
         {
             if (Bodies.Type[b] != BodyType.Dynamic || Bodies.MassOverride[b] < 0 || def.IsSensor || def.Density <= 0) return;
             MassProperties m = def.Geometry.ComputeMass(def.Density).Transformed(localPose);
+            // Each shape on its own within the range too, so that removing the others later
+            // cannot leave a body lighter than Limits.MinMass.
+            if (Bodies.MassOverride[b] == 0 && def.Geometry.Type != ShapeType.Plane && def.Geometry.Type != ShapeType.TriangleMesh)
+                Limits.CheckMass(m.Mass, "shape.Density (this shape's mass)");
             MassProperties total = ShapeMass(b);
             if (total.Mass > 0 && m.Mass > 0) total = MassProperties.Combine(total, m);
             else if (m.Mass > 0) total = m;
