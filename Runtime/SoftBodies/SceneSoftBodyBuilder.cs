@@ -46,7 +46,7 @@ namespace Fulcrum.SoftBodies
                 string path = $"$.softBodies[{made}]";
                 if (e.ParamName is string field && (field == "mesh" || field.StartsWith("mesh.", StringComparison.Ordinal)))
                     path += "." + field;
-                throw new SceneException(new[] { new SceneError(path, e.Message) });
+                throw new SceneException(new[] { new SceneError(path, SceneError.MessageOf(e)) });
             }
             return handles;
         }
@@ -136,8 +136,22 @@ namespace Fulcrum.SoftBodies
                 case SceneSoftBeam beam: return SoftMesh.Beam(beam.Length, beam.Thickness, beam.Cells);
                 case SceneSoftCloth cloth: return SoftMesh.Cloth(cloth.Size.X, cloth.Size.Y, cloth.Cells[0], cloth.Cells[1]);
                 case SceneSoftTetGen tetgen:
-                    return SoftMesh.FromTetGen(ReadText(directory, tetgen.Node, "mesh.node"), ReadText(directory, tetgen.Ele, "mesh.ele"));
-                case SceneSoftObj obj: return SoftMesh.FromObj(ReadText(directory, obj.File, "mesh.file"));
+                {
+                    string node = ReadText(directory, tetgen.Node, "mesh.node"), ele = ReadText(directory, tetgen.Ele, "mesh.ele");
+                    try { return SoftMesh.FromTetGen(node, ele); }
+                    catch (ArgumentException e)
+                    {
+                        // Name the file the reader's line number refers to.
+                        bool inEle = e.Message.StartsWith("tetgen .ele", StringComparison.Ordinal);
+                        throw new ArgumentException($"'{Scenes.SceneError.Clip(inEle ? tetgen.Ele : tetgen.Node, 200)}': {SceneError.MessageOf(e)}", inEle ? "mesh.ele" : "mesh.node", e);
+                    }
+                }
+                case SceneSoftObj obj:
+                {
+                    string text = ReadText(directory, obj.File, "mesh.file");
+                    try { return SoftMesh.FromObj(text); }
+                    catch (ArgumentException e) { throw new ArgumentException($"'{Scenes.SceneError.Clip(obj.File, 200)}': {SceneError.MessageOf(e)}", "mesh.file", e); }
+                }
                 default: throw new ArgumentException($"mesh type {mesh.Type} is not supported.", "mesh.type");
             }
         }
@@ -147,11 +161,12 @@ namespace Fulcrum.SoftBodies
             string path = directory != null ? Path.Combine(directory, file) : file;
             try
             {
-                return File.ReadAllText(path);
+                return Scenes.SceneFile.ReadText(path);
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is NotSupportedException || e is ArgumentException)
             {
-                throw new ArgumentException($"{field}: cannot read '{path}': {e.Message}", field, e);
+                // SceneFile.ReadText's messages name the file already.
+                throw new ArgumentException(e is IOException ? e.Message : $"cannot read '{Scenes.SceneError.Clip(path, 200)}': {e.Message}", field, e);
             }
         }
     }

@@ -205,7 +205,7 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>The handle of this body.</summary>
-        public SoftBodyHandle Handle => new SoftBodyHandle(Slot, Generation);
+        public SoftBodyHandle Handle => new SoftBodyHandle(Slot, Generation, World.Id);
 
         /// <summary>True once the body was removed from its world.</summary>
         public bool IsDestroyed => Destroyed;

@@ -120,9 +120,9 @@ namespace Fulcrum.SoftBodies
         {
             if (Mesh == null) throw new ArgumentException("softBody.Mesh is required.", "softBody.Mesh");
             Material.Validate();
-            Mathematics.Validate.Finite(Position, "softBody.Position");
+            Limits.CheckPosition(Position, "softBody.Position");
             Mathematics.Validate.Rotation(Rotation, "softBody.Rotation");
-            Mathematics.Validate.Finite(LinearVelocity, "softBody.LinearVelocity");
+            Limits.CheckSpeed(LinearVelocity, "softBody.LinearVelocity");
             if (!InitialDeformation.IsFinite) throw new ArgumentException($"softBody.InitialDeformation must be finite, got {InitialDeformation}.", "softBody.InitialDeformation");
             if (!(MathF.Abs(InitialDeformation.Determinant) > 1e-6f))
                 throw new ArgumentException($"softBody.InitialDeformation must be invertible, got det = {InitialDeformation.Determinant}.", "softBody.InitialDeformation");

@@ -71,14 +71,15 @@ namespace Fulcrum.SoftBodies
         }
 
         internal bool IsLive(SoftBodyHandle handle) =>
-            handle.Generation != 0 && (uint)handle.Index < (uint)_slots.Count && _slots[handle.Index] is SoftBody b && b.Generation == handle.Generation;
+            handle.WorldId == _world.Id && handle.Generation != 0 && (uint)handle.Index < (uint)_slots.Count && _slots[handle.Index] is SoftBody b && b.Generation == handle.Generation;
 
         internal SoftBody Get(SoftBodyHandle handle)
         {
+            if (!handle.IsNone && handle.WorldId != _world.Id) throw _world.ForeignHandle(handle.ToString(), handle.WorldId);
             if (!IsLive(handle))
                 throw new StaleHandleException(handle.IsNone
                     ? "The soft body handle is None."
-                    : $"{handle} does not name a live soft body: it was destroyed, or belongs to another world.");
+                    : $"{handle} does not name a live soft body: it was destroyed, or was never issued by this world.");
             return _slots[handle.Index]!;
         }
 

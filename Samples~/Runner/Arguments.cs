@@ -67,6 +67,28 @@ sealed class Arguments
         return v;
     }
 
+    /// <summary>An integer flag in [min, max] (the caps of <see cref="Limits"/>), or null when absent.</summary>
+    public int? Int(string flag, int min, int max, string limit)
+    {
+        if (String(flag) is not string s) return null;
+        if (!int.TryParse(s, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out int v) || v < min)
+            throw new UsageException($"{flag}: expected an integer >= {min}, got '{Fulcrum.Scenes.SceneError.Clip(s)}'");
+        if (v > max)
+            throw new UsageException($"{flag}: expected an integer in {min}..{max} ({limit}), got '{Fulcrum.Scenes.SceneError.Clip(s)}'");
+        return v;
+    }
+
+    /// <summary>A number flag in [min, max], or null when absent.</summary>
+    public float? FloatInRange(string flag, float min, float max, string limit)
+    {
+        if (String(flag) is not string s) return null;
+        if (!float.TryParse(s, NumberStyles.Float, CultureInfo.InvariantCulture, out float v) || !float.IsFinite(v) || !(v > 0))
+            throw new UsageException($"{flag}: expected a number > 0, got '{Fulcrum.Scenes.SceneError.Clip(s)}'");
+        if (!(v >= min && v <= max))
+            throw new UsageException($"{flag}: expected a number in [{min:G}, {max:G}] ({limit}), got '{Fulcrum.Scenes.SceneError.Clip(s)}'");
+        return v;
+    }
+
     public float? PositiveFloat(string flag)
     {
         if (String(flag) is not string s) return null;

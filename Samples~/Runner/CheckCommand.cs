@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.IO;
 using Fulcrum.Scenes;
@@ -10,8 +11,20 @@ static class CheckCommand
     public static int Run(Arguments a, TextWriter output, TextWriter error)
     {
         string path = a.Scene();
-        if (!File.Exists(path)) throw new UsageException($"{path}: no such scene file", Cli.ExitScene);
-        IReadOnlyList<SceneError> errors = SceneFile.Check(File.ReadAllText(path), out SceneDocument? doc);
+        string text;
+        try
+        {
+            text = SceneFile.ReadText(path);
+        }
+        catch (FileNotFoundException)
+        {
+            throw new UsageException($"{path}: no such scene file", Cli.ExitScene);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new UsageException($"{path}: cannot read: {e.Message}", Cli.ExitScene);
+        }
+        IReadOnlyList<SceneError> errors = SceneFile.Check(text, out SceneDocument? doc);
         foreach (SceneError e in errors) error.WriteLine($"{path}: {e}");
         if (errors.Count > 0)
         {

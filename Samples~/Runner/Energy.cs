@@ -18,7 +18,7 @@ static class Energy
         {
             int i = b.Active[k];
             if (b.Type[i] != BodyType.Dynamic) continue;
-            e += world.GetBody(new BodyHandle(i, b.Generation[i])).KineticEnergy;
+            e += world.GetBody(new BodyHandle(i, b.Generation[i], world.Id)).KineticEnergy;
         }
         return e;
     }

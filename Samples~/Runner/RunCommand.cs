@@ -1,3 +1,4 @@
+using System;
 using System.IO;
 using Fulcrum.Scenes;
 
@@ -19,6 +20,7 @@ static class RunCommand
         int every = a.Int("--every", 1) ?? 1;
         string? tracePath = a.String("--trace");
         if (tracePath != null && tracePath.Length == 0) throw new UsageException("--trace: expected a file name");
+        if (tracePath != null && Directory.Exists(tracePath)) throw new UsageException($"--trace: '{tracePath}' is a directory; give a file name such as {Path.Combine(tracePath, "trace.csv")}");
         if (a.Has("--every") && tracePath == null) throw new UsageException("--every: only applies with --trace");
         WorldSettings settings = SceneSetup.Settings(a);
         SceneDocument doc = SceneSetup.Load(path);
@@ -39,7 +41,7 @@ static class RunCommand
         RunResult result;
         if (tracePath != null)
         {
-            using var trace = new TraceWriter(tracePath, scene, soft);
+            using var trace = OpenTrace(tracePath, scene, soft);
             result = SceneRun.Run(scene, steps, doc.Timestep, soft, trace, every);
             output.WriteLine($"trace: {trace.BodyPath}, {trace.WorldPath}" + (trace.SoftPath != null ? $", {trace.SoftPath}" : ""));
         }
@@ -53,5 +55,18 @@ static class RunCommand
             TextTable.Number(result.VolumeError), TextTable.Number(result.MinJ));
         table.Write(output);
         return Cli.ExitOk;
+    }
+
+    // The trace files, or a one-line reason naming the flag and the path.
+    static TraceWriter OpenTrace(string path, SceneInstance scene, ISoftBodyMonitor? soft)
+    {
+        try
+        {
+            return new TraceWriter(path, scene, soft);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            throw new UsageException($"--trace: cannot write '{path}': {e.Message}");
+        }
     }
 }

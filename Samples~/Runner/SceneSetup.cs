@@ -11,11 +11,14 @@ static class SceneSetup
     /// <summary>Reads and validates a scene; a problem becomes a <see cref="UsageException"/> naming the file and the field.</summary>
     public static SceneDocument Load(string path)
     {
-        if (!File.Exists(path)) throw new UsageException($"{path}: no such scene file", Cli.ExitScene);
         string text;
         try
         {
-            text = File.ReadAllText(path);
+            text = SceneFile.ReadText(path);
+        }
+        catch (FileNotFoundException)
+        {
+            throw new UsageException($"{path}: no such scene file", Cli.ExitScene);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
@@ -35,10 +38,10 @@ static class SceneSetup
     /// <summary>--dt, --solver, --iterations and --substeps override the scene's values.</summary>
     public static void ApplySolverFlags(SceneDocument doc, Arguments a)
     {
-        if (a.PositiveFloat("--dt") is float dt) doc.Timestep = dt;
+        if (a.FloatInRange("--dt", Limits.MinTimeStep, Limits.MaxTimeStep, "Limits.MinTimeStep/MaxTimeStep") is float dt) doc.Timestep = dt;
         if (a.Solver("--solver") is SolverType solver) doc.Solver.Type = solver;
-        if (a.Int("--iterations", 1) is int iterations) doc.Solver.Iterations = iterations;
-        if (a.Int("--substeps", 1) is int substeps) doc.Solver.Substeps = substeps;
+        if (a.Int("--iterations", 1, Limits.MaxIterations, "Limits.MaxIterations") is int iterations) doc.Solver.Iterations = iterations;
+        if (a.Int("--substeps", 1, Limits.MaxSubsteps, "Limits.MaxSubsteps") is int substeps) doc.Solver.Substeps = substeps;
     }
 
     /// <summary>Steps from --steps or --seconds (not both), else <paramref name="defaultSeconds"/>.</summary>
@@ -49,7 +52,10 @@ static class SceneSetup
         if (steps != null && seconds != null) throw new UsageException("--steps: give --steps or --seconds, not both");
         if (steps is int n) return n;
         double count = Math.Ceiling((seconds ?? defaultSeconds) / (double)dt - 1e-6);
-        if (count > int.MaxValue) throw new UsageException($"--seconds: {seconds} s is too many steps of {dt.ToString("R", CultureInfo.InvariantCulture)} s");
+        if (count > int.MaxValue)
+            throw new UsageException(seconds != null
+                ? $"--seconds: {seconds} s is too many steps of {F(dt)} s"
+                : $"timestep: {F(dt)} s needs more than {int.MaxValue} steps for the default {defaultSeconds} s (set $.timestep or --dt, or give --steps)");
         return Math.Max(1, (int)count);
     }
 
@@ -57,7 +63,7 @@ static class SceneSetup
     public static WorldSettings Settings(Arguments a)
     {
         WorldSettings s = WorldSettings.Default;
-        if (a.Int("--threads", 1) is int threads) s.Threads = threads;
+        if (a.Int("--threads", 1, Limits.MaxThreads, "Limits.MaxThreads") is int threads) s.Threads = threads;
         return s;
     }
 

@@ -42,7 +42,15 @@ public static class SoftBodySupport
         note = null;
         if (scene.SoftBodies.Count == 0) return null;
         string? directory = Path.GetDirectoryName(Path.GetFullPath(scenePath));
-        return new Monitor(scene.World, SceneSoftBodyBuilder.Build(scene, substeps, iterations, directory));
+        try
+        {
+            return new Monitor(scene.World, SceneSoftBodyBuilder.Build(scene, substeps, iterations, directory));
+        }
+        catch (SceneException e)
+        {
+            // A mesh file that is missing, not a regular file, or garbage: one line naming it.
+            throw new UsageException($"{scenePath}: {e.Errors[0]}", Cli.ExitScene);
+        }
     }
 
     sealed class Monitor : ISoftBodyMonitor

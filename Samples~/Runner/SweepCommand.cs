@@ -40,6 +40,7 @@ static class SweepCommand
         List<int> substeps = a.Ints("--substeps", 1) ?? new List<int> { 1, 2, 4, 8 };
         string outDir = a.String("--out") ?? "sweep-" + Path.GetFileNameWithoutExtension(path);
         if (outDir.Length == 0) throw new UsageException("--out: expected a directory");
+        if (File.Exists(outDir)) throw new UsageException($"--out: '{outDir}' is a file; give a directory");
         WorldSettings settings = SceneSetup.Settings(a);
         // A sweep prices solver settings: sleeping would make a settled scene cost nothing
         // whatever the setting, so every run (the reference too) keeps its bodies awake.

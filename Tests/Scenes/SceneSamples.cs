@@ -50,7 +50,7 @@ namespace Fulcrum.Tests.Scenes
             { "name": "ground", "type": "static", "material": "ice", "shape": { "type": "plane", "normal": [0, 1, 0], "offset": -0 }, "position": [0, 0, 0] },
             { "name": "ramp", "type": "static", "shape": { "type": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 1]], "triangles": [[0, 1, 2]] }, "position": [3, 0, 0] },
             { "name": "rock", "type": "dynamic", "mass": 2.5, "shape": { "type": "convex", "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]] },
-              "position": [0, 1, 0], "rotation": [0, 0.38268343, 0, 0.9238795], "velocity": [1, 2, 3], "angularVelocity": [0.5, -0.25, 3.4e38], "ccd": true },
+              "position": [0, 1, 0], "rotation": [0, 0.38268343, 0, 0.9238795], "velocity": [1, 2, 3], "angularVelocity": [0.5, -0.25, 123456.789], "ccd": true },
             { "name": "dumbbell", "material": "wood", "shape": { "type": "compound", "children": [
                 { "shape": { "type": "sphere", "radius": 0.3 }, "position": [-0.5, 0, 0] },
                 { "shape": { "type": "sphere", "radius": 0.3 }, "position": [0.5, 0, 0], "rotation": [0, 0, 0.70710677, 0.70710677] },

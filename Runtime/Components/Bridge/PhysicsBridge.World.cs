@@ -194,8 +194,8 @@ namespace Fulcrum.Components
             ref BridgeContact c = ref _wEvents[_wEventCount++];
             c.Kind = e.Kind;
             c.IsTrigger = e.IsSensor;
-            c.ProxyA = a < 0 ? default : new ProxyHandle(a, _wGeneration[a]);
-            c.ProxyB = b < 0 ? default : new ProxyHandle(b, _wGeneration[b]);
+            c.ProxyA = a < 0 ? default : new ProxyHandle(a, _wGeneration[a], _world.Id);
+            c.ProxyB = b < 0 ? default : new ProxyHandle(b, _wGeneration[b], _world.Id);
             c.EntityA = a < 0 ? null : _wEntity[a];
             c.EntityB = b < 0 ? null : _wEntity[b];
             c.Normal = e.Normal;

@@ -119,7 +119,7 @@ namespace Fulcrum.Components
             if (mode == DriveMode.Physics && body.Type == BodyType.Static)
                 throw new ArgumentException($"PhysicsBridge.Register: {entity} has a static body, which physics cannot drive; register it with DriveMode.Game.", nameof(mode));
             entity.GetPose(out Vector3 position, out Quaternion rotation);
-            FieldCheck.Finite(position, entity, "position");
+            FieldCheck.Position(position, entity, "position");
             rotation = FieldCheck.Rotation(rotation, entity, "rotation");
             if (body.Mass < 0 || !float.IsFinite(body.Mass)) throw new ArgumentException($"PhysicsBridge.Register: {entity} body.Mass must be finite and >= 0, got {body.Mass}.", "Mass");
 
@@ -144,7 +144,7 @@ namespace Fulcrum.Components
             _liveCount++;
             var cmd = new BridgeCommand { Kind = BridgeCommandKind.Create, Slot = slot, Generation = _gGeneration[slot], Entity = entity, Body = def, Mode = mode };
             Enqueue(cmd, shapes);
-            return new ProxyHandle(slot, _gGeneration[slot]);
+            return new ProxyHandle(slot, _gGeneration[slot], _world.Id);
         }
 
         /// <summary>
@@ -162,7 +162,7 @@ namespace Fulcrum.Components
 
         /// <summary>True while <paramref name="proxy"/> names a registered entity.</summary>
         public bool IsRegistered(ProxyHandle proxy) =>
-            !proxy.IsNone && (uint)proxy.Index < (uint)_gSlotCount && _gGeneration[proxy.Index] == proxy.Generation && _gState[proxy.Index] == Live;
+            !proxy.IsNone && proxy.WorldId == _world.Id && (uint)proxy.Index < (uint)_gSlotCount && _gGeneration[proxy.Index] == proxy.Generation && _gState[proxy.Index] == Live;
 
         /// <summary>The entity of a registered proxy.</summary>
         public IPhysicsEntity GetEntity(ProxyHandle proxy) => _gEntity[LiveSlot(proxy, nameof(GetEntity))]!;
@@ -193,7 +193,7 @@ namespace Fulcrum.Components
         public void AddForce(ProxyHandle proxy, Vector3 force, ForceMode mode = ForceMode.Force)
         {
             int slot = LiveSlot(proxy, nameof(AddForce));
-            FieldCheck.Finite(force, _gEntity[slot]!, "force");
+            FieldCheck.Force(force, _gEntity[slot]!, "force");
             Enqueue(new BridgeCommand { Kind = BridgeCommandKind.AddForce, Slot = slot, Generation = proxy.Generation, Vector = force, ForceMode = mode }, default);
         }
 
@@ -201,8 +201,8 @@ namespace Fulcrum.Components
         public void AddForceAtPosition(ProxyHandle proxy, Vector3 force, Vector3 worldPoint, ForceMode mode = ForceMode.Force)
         {
             int slot = LiveSlot(proxy, nameof(AddForceAtPosition));
-            FieldCheck.Finite(force, _gEntity[slot]!, "force");
-            FieldCheck.Finite(worldPoint, _gEntity[slot]!, "worldPoint");
+            FieldCheck.Force(force, _gEntity[slot]!, "force");
+            FieldCheck.Position(worldPoint, _gEntity[slot]!, "worldPoint");
             Enqueue(new BridgeCommand { Kind = BridgeCommandKind.AddForceAtPosition, Slot = slot, Generation = proxy.Generation, Vector = force, Point = worldPoint, ForceMode = mode }, default);
         }
 
@@ -210,7 +210,7 @@ namespace Fulcrum.Components
         public void AddTorque(ProxyHandle proxy, Vector3 torque, ForceMode mode = ForceMode.Force)
         {
             int slot = LiveSlot(proxy, nameof(AddTorque));
-            FieldCheck.Finite(torque, _gEntity[slot]!, "torque");
+            FieldCheck.Force(torque, _gEntity[slot]!, "torque");
             Enqueue(new BridgeCommand { Kind = BridgeCommandKind.AddTorque, Slot = slot, Generation = proxy.Generation, Vector = torque, ForceMode = mode }, default);
         }
 
@@ -218,7 +218,7 @@ namespace Fulcrum.Components
         public void SetLinearVelocity(ProxyHandle proxy, Vector3 velocity)
         {
             int slot = LiveSlot(proxy, nameof(SetLinearVelocity));
-            FieldCheck.Finite(velocity, _gEntity[slot]!, "linearVelocity");
+            FieldCheck.Speed(velocity, _gEntity[slot]!, "linearVelocity");
             Enqueue(new BridgeCommand { Kind = BridgeCommandKind.SetLinearVelocity, Slot = slot, Generation = proxy.Generation, Vector = velocity }, default);
         }
 
@@ -226,7 +226,7 @@ namespace Fulcrum.Components
         public void SetAngularVelocity(ProxyHandle proxy, Vector3 velocity)
         {
             int slot = LiveSlot(proxy, nameof(SetAngularVelocity));
-            FieldCheck.Finite(velocity, _gEntity[slot]!, "angularVelocity");
+            FieldCheck.Speed(velocity, _gEntity[slot]!, "angularVelocity");
             Enqueue(new BridgeCommand { Kind = BridgeCommandKind.SetAngularVelocity, Slot = slot, Generation = proxy.Generation, Vector = velocity }, default);
         }
 
@@ -234,7 +234,7 @@ namespace Fulcrum.Components
         public void Teleport(ProxyHandle proxy, Vector3 position, Quaternion rotation)
         {
             int slot = LiveSlot(proxy, nameof(Teleport));
-            FieldCheck.Finite(position, _gEntity[slot]!, "position");
+            FieldCheck.Position(position, _gEntity[slot]!, "position");
             Quaternion q = FieldCheck.Rotation(rotation, _gEntity[slot]!, "rotation");
             _gInput[slot] = new Pose(position, q);
             Enqueue(new BridgeCommand { Kind = BridgeCommandKind.Teleport, Slot = slot, Generation = proxy.Generation, Vector = position, Rotation = q }, default);
@@ -262,7 +262,7 @@ namespace Fulcrum.Components
                 if (_gState[slot] != Live || _gMode[slot] != DriveMode.Game || _gStatic[slot]) continue;
                 IPhysicsEntity e = _gEntity[slot]!;
                 e.GetPose(out Vector3 p, out Quaternion q);
-                FieldCheck.Finite(p, e, "position");
+                FieldCheck.Position(p, e, "position");
                 _gInput[slot] = new Pose(p, FieldCheck.Rotation(q, e, "rotation"));
             }
             if (_threaded) PostInputs();
@@ -343,7 +343,9 @@ namespace Fulcrum.Components
             if (!IsRegistered(proxy))
                 throw new StaleHandleException(proxy.IsNone
                     ? $"PhysicsBridge.{caller}: the proxy handle is None."
-                    : $"PhysicsBridge.{caller}: {proxy} does not name a registered entity (it was unregistered, or belongs to another bridge).");
+                    : proxy.WorldId != _world.Id
+                        ? $"PhysicsBridge.{caller}: {proxy} belongs to the bridge of World {proxy.WorldId}, not this one (World {_world.Id})."
+                        : $"PhysicsBridge.{caller}: {proxy} does not name a registered entity (it was unregistered).");
             return proxy.Index;
         }
 

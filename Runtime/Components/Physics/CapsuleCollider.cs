@@ -21,7 +21,7 @@ namespace Fulcrum.Components
             get => _radius;
             set
             {
-                FieldCheck.Positive(value, this, nameof(radius));
+                FieldCheck.Size(value, this, nameof(radius));
                 ThrowIfStepping(nameof(radius));
                 _radius = value;
                 Rebuild();
@@ -34,7 +34,7 @@ namespace Fulcrum.Components
             get => _height;
             set
             {
-                FieldCheck.Positive(value, this, nameof(height));
+                FieldCheck.Size(value, this, nameof(height));
                 ThrowIfStepping(nameof(height));
                 _height = value;
                 Rebuild();

@@ -17,6 +17,45 @@ namespace Fulcrum.Components
             if (!Validate.IsFinite(v)) throw new ArgumentException($"{owner}: {field} must be finite, got {v}.", field);
         }
 
+        /// <summary>Throws unless <paramref name="v"/> is finite and within <see cref="Limits.MaxPosition"/> on every axis.</summary>
+        public static void Position(Vector3 v, object owner, string field)
+        {
+            Finite(v, owner, field);
+            float m = Limits.MaxPosition;
+            if (Math.Abs(v.X) > m || Math.Abs(v.Y) > m || Math.Abs(v.Z) > m)
+                throw new ArgumentException($"{owner}: {field} must lie within +-{m:G} m on every axis (Limits.MaxPosition), got {v}.", field);
+        }
+
+        /// <summary>Throws unless <paramref name="v"/> is finite with magnitude at most <see cref="Limits.MaxForce"/>.</summary>
+        public static void Force(Vector3 v, object owner, string field)
+        {
+            Finite(v, owner, field);
+            if (Limits.Length(v) > Limits.MaxForce)
+                throw new ArgumentException($"{owner}: {field} must have magnitude at most {Limits.MaxForce:G} (Limits.MaxForce), got {v}.", field);
+        }
+
+        /// <summary>Throws unless <paramref name="v"/> is finite with magnitude at most <see cref="Limits.MaxInputSpeed"/>.</summary>
+        public static void Speed(Vector3 v, object owner, string field)
+        {
+            Finite(v, owner, field);
+            if (Limits.Length(v) > Limits.MaxInputSpeed)
+                throw new ArgumentException($"{owner}: {field} must have magnitude at most {Limits.MaxInputSpeed:G} (Limits.MaxInputSpeed), got {v}.", field);
+        }
+
+        /// <summary>Throws unless <paramref name="v"/> is a mass in [<see cref="Limits.MinMass"/>, <see cref="Limits.MaxMass"/>].</summary>
+        public static void Mass(float v, object owner, string field)
+        {
+            if (!(float.IsFinite(v) && v >= Limits.MinMass && v <= Limits.MaxMass))
+                throw new ArgumentException($"{owner}: {field} must be between {Limits.MinMass:G} and {Limits.MaxMass:G} kg (Limits.MinMass/MaxMass), got {v}.", field);
+        }
+
+        /// <summary>Throws unless <paramref name="v"/> is a size in [<see cref="Limits.MinShapeSize"/>, <see cref="Limits.MaxShapeSize"/>] m.</summary>
+        public static void Size(float v, object owner, string field)
+        {
+            if (!(float.IsFinite(v) && v >= Limits.MinShapeSize && v <= Limits.MaxShapeSize))
+                throw new ArgumentException($"{owner}: {field} must be between {Limits.MinShapeSize:G} and {Limits.MaxShapeSize:G} m (Limits.MinShapeSize/MaxShapeSize), got {v}.", field);
+        }
+
         /// <summary>Throws unless <paramref name="v"/> is finite and &gt; 0.</summary>
         public static void Positive(float v, object owner, string field)
         {

@@ -48,7 +48,7 @@ namespace Fulcrum.Components
             get => _mass;
             set
             {
-                FieldCheck.Positive(value, this, nameof(mass));
+                FieldCheck.Mass(value, this, nameof(mass));
                 ThrowIfStepping(nameof(mass));
                 _mass = value;
                 if (HasBody) ApplyMass();
@@ -61,7 +61,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).LinearVelocity : _linearVelocity;
             set
             {
-                FieldCheck.Finite(value, this, "linearVelocity");
+                FieldCheck.Speed(value, this, "linearVelocity");
                 ThrowIfStepping(nameof(linearVelocity));
                 _linearVelocity = value;
                 if (HasBody) World.GetBody(_body).LinearVelocity = value;
@@ -74,7 +74,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).AngularVelocity : _angularVelocity;
             set
             {
-                FieldCheck.Finite(value, this, "angularVelocity");
+                FieldCheck.Speed(value, this, "angularVelocity");
                 ThrowIfStepping(nameof(angularVelocity));
                 _angularVelocity = value;
                 if (HasBody) World.GetBody(_body).AngularVelocity = value;
@@ -226,7 +226,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).Position : transform.position;
             set
             {
-                FieldCheck.Finite(value, this, "position");
+                FieldCheck.Position(value, this, "position");
                 ThrowIfStepping(nameof(position));
                 if (!HasBody) { transform.position = value; return; }
                 World.GetBody(_body).Position = value;
@@ -256,7 +256,7 @@ namespace Fulcrum.Components
         /// </summary>
         public void AddForce(Vector3 force, ForceMode mode = ForceMode.Force)
         {
-            FieldCheck.Finite(force, this, "force");
+            FieldCheck.Force(force, this, "force");
             ThrowIfStepping(nameof(AddForce));
             if (HasBody) World.AddForce(_body, force, mode);
         }
@@ -267,14 +267,14 @@ namespace Fulcrum.Components
         /// <summary>Like <see cref="AddForce(Vector3, ForceMode)"/>, with the force in the body's axes.</summary>
         public void AddRelativeForce(Vector3 force, ForceMode mode = ForceMode.Force)
         {
-            FieldCheck.Finite(force, this, "force");
+            FieldCheck.Force(force, this, "force");
             AddForce(Vector3.Transform(force, rotation), mode);
         }
 
         /// <summary>Applies a torque in world axes (N m, or rad/s^2, N m s, rad/s by mode).</summary>
         public void AddTorque(Vector3 torque, ForceMode mode = ForceMode.Force)
         {
-            FieldCheck.Finite(torque, this, "torque");
+            FieldCheck.Force(torque, this, "torque");
             ThrowIfStepping(nameof(AddTorque));
             if (HasBody) World.AddTorque(_body, torque, mode);
         }
@@ -282,15 +282,15 @@ namespace Fulcrum.Components
         /// <summary>Like <see cref="AddTorque"/>, with the torque in the body's axes.</summary>
         public void AddRelativeTorque(Vector3 torque, ForceMode mode = ForceMode.Force)
         {
-            FieldCheck.Finite(torque, this, "torque");
+            FieldCheck.Force(torque, this, "torque");
             AddTorque(Vector3.Transform(torque, rotation), mode);
         }
 
         /// <summary>Applies a force at a world point: the force at the centre plus the torque (p - c) x F.</summary>
         public void AddForceAtPosition(Vector3 force, Vector3 position, ForceMode mode = ForceMode.Force)
         {
-            FieldCheck.Finite(force, this, "force");
-            FieldCheck.Finite(position, this, "position");
+            FieldCheck.Force(force, this, "force");
+            FieldCheck.Position(position, this, "position");
             ThrowIfStepping(nameof(AddForceAtPosition));
             if (HasBody) World.AddForceAtPosition(_body, force, position, mode);
         }
@@ -305,7 +305,7 @@ namespace Fulcrum.Components
         /// </summary>
         public void MovePosition(Vector3 position)
         {
-            FieldCheck.Finite(position, this, "position");
+            FieldCheck.Position(position, this, "position");
             ThrowIfStepping(nameof(MovePosition));
             if (!HasBody) { transform.position = position; return; }
             if (!_isKinematic) { this.position = position; return; }

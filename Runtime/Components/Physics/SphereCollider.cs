@@ -13,7 +13,7 @@ namespace Fulcrum.Components
             get => _radius;
             set
             {
-                FieldCheck.Positive(value, this, nameof(radius));
+                FieldCheck.Size(value, this, nameof(radius));
                 ThrowIfStepping(nameof(radius));
                 _radius = value;
                 Rebuild();

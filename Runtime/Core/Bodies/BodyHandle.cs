@@ -3,9 +3,11 @@ using System;
 namespace Fulcrum
 {
     /// <summary>
-    /// Identifies a rigid body in a <see cref="World"/>: a slot index and the generation of that slot.
+    /// Identifies a rigid body in a <see cref="World"/>: a slot index, the generation of that slot and
+    /// the id of the world that issued it.
     /// A handle whose body was removed is stale: every World call that takes it throws
-    /// <see cref="StaleHandleException"/> instead of touching whatever reuses the slot.
+    /// <see cref="StaleHandleException"/> instead of touching whatever reuses the slot, and a handle from another world is
+    /// refused the same way (it never reaches the other world's object in the same slot).
     /// <c>default</c> is "none" (generations start at 1).
     /// </summary>
     public readonly struct BodyHandle : IEquatable<BodyHandle>
@@ -14,13 +16,23 @@ namespace Fulcrum
         public readonly int Index;
         /// <summary>The generation of the slot when the handle was issued; 0 means none.</summary>
         public readonly int Generation;
+        /// <summary>
+        /// <see cref="World.Id"/> of the world that issued the handle (ids start at 1 and are
+        /// unique in the process). A world refuses a handle with another id. Not part of the
+        /// simulation state: a restored world has its own id.
+        /// </summary>
+        public readonly int WorldId;
 
-        /// <summary>Builds a handle. Handles come from the world; user code rarely builds one.</summary>
-        public BodyHandle(int index, int generation)
+        /// <summary>Builds a handle of the world with id <paramref name="worldId"/>. Handles come from the world; user code rarely builds one.</summary>
+        public BodyHandle(int index, int generation, int worldId)
         {
             Index = index;
             Generation = generation;
+            WorldId = worldId;
         }
+
+        /// <summary>Builds a handle with no world id (0), which every world refuses; kept for source compatibility.</summary>
+        public BodyHandle(int index, int generation) : this(index, generation, 0) { }
 
         /// <summary>The "none" handle.</summary>
         public static BodyHandle None => default;
@@ -28,7 +40,11 @@ namespace Fulcrum
         /// <summary>True for <see cref="None"/>.</summary>
         public bool IsNone => Generation == 0;
 
-        /// <inheritdoc/>
+        /// <summary>
+        /// Same slot and generation. The world id is left out on purpose: the handles of two
+        /// worlds built the same way compare equal, which is how determinism checks compare two
+        /// runs; which world accepts a handle is still decided by <see cref="WorldId"/>.
+        /// </summary>
         public bool Equals(BodyHandle other) => Index == other.Index && Generation == other.Generation;
 
         /// <inheritdoc/>
@@ -37,13 +53,13 @@ namespace Fulcrum
         /// <inheritdoc/>
         public override int GetHashCode() => (Index * 397) ^ Generation;
 
-        /// <summary>Same slot and generation.</summary>
+        /// <summary>Same slot and generation (see <see cref="Equals(BodyHandle)"/>).</summary>
         public static bool operator ==(BodyHandle a, BodyHandle b) => a.Equals(b);
 
         /// <summary>Different slot or generation.</summary>
         public static bool operator !=(BodyHandle a, BodyHandle b) => !a.Equals(b);
 
         /// <inheritdoc/>
-        public override string ToString() => IsNone ? "BodyHandle(none)" : $"BodyHandle({Index}:{Generation})";
+        public override string ToString() => IsNone ? "BodyHandle(none)" : $"BodyHandle({Index}:{Generation} of world {WorldId})";
     }
 }

@@ -44,7 +44,7 @@ namespace Fulcrum
         }
 
         /// <summary>The handle of this body.</summary>
-        public BodyHandle Handle => new BodyHandle(_slot, _generation);
+        public BodyHandle Handle => new BodyHandle(_slot, _generation, _world.Id);
 
         /// <summary>Static, kinematic or dynamic.</summary>
         public BodyType Type => B.Type[_slot];
@@ -65,7 +65,7 @@ namespace Fulcrum
             get => B.Position[_slot];
             set
             {
-                Validate.Finite(value, nameof(Position));
+                Limits.CheckPosition(value, nameof(Position));
                 BodyStorage b = Writable;
                 b.Position[_slot] = value;
                 b.PreviousPosition[_slot] = value;
@@ -105,7 +105,7 @@ namespace Fulcrum
             get => B.LinearVelocity[_slot];
             set
             {
-                Validate.Finite(value, nameof(LinearVelocity));
+                Limits.CheckSpeed(value, nameof(LinearVelocity));
                 BodyStorage b = Writable;
                 if (b.Type[_slot] == BodyType.Static) return;
                 b.LinearVelocity[_slot] = value;
@@ -119,7 +119,7 @@ namespace Fulcrum
             get => B.AngularVelocity[_slot];
             set
             {
-                Validate.Finite(value, nameof(AngularVelocity));
+                Limits.CheckSpeed(value, nameof(AngularVelocity));
                 BodyStorage b = Writable;
                 if (b.Type[_slot] == BodyType.Static) return;
                 b.AngularVelocity[_slot] = value;
@@ -190,7 +190,7 @@ namespace Fulcrum
             get => B.GravityScale[_slot];
             set
             {
-                Validate.Finite(value, nameof(GravityScale));
+                Limits.CheckGravityScale(value, nameof(GravityScale));
                 Writable.GravityScale[_slot] = value;
             }
         }

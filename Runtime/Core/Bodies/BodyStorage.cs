@@ -29,6 +29,7 @@ namespace Fulcrum
         public Vector3[] InverseInertiaPrincipal = Array.Empty<Vector3>(); // 1/I along the principal axes (0 = locked)
         public Quaternion[] InertiaFrame = Array.Empty<Quaternion>();      // principal axes in the body frame
         public Vector3[] LocalCenter = Array.Empty<Vector3>();
+        public float[] Radius = Array.Empty<float>();                // farthest shape point from the centre of mass, m (speed cap of spin)
         public float[] LinearDamping = Array.Empty<float>();
         public float[] AngularDamping = Array.Empty<float>();
         public float[] GravityScale = Array.Empty<float>();
@@ -97,6 +98,7 @@ namespace Fulcrum
             Array.Resize(ref InverseInertiaPrincipal, capacity);
             Array.Resize(ref InertiaFrame, capacity);
             Array.Resize(ref LocalCenter, capacity);
+            Array.Resize(ref Radius, capacity);
             Array.Resize(ref LinearDamping, capacity);
             Array.Resize(ref AngularDamping, capacity);
             Array.Resize(ref GravityScale, capacity);

@@ -31,7 +31,7 @@ namespace Fulcrum.Collision
                 return maxFraction;
             var hit = new RayHit
             {
-                Shape = new ShapeHandle(shape, s.Generation[shape]),
+                Shape = new ShapeHandle(shape, s.Generation[shape], World.Id),
                 Body = World.BodyHandleOf(s.Body[shape]),
                 Point = Origin + Direction * t,
                 Normal = n,

@@ -55,7 +55,7 @@ namespace Fulcrum.Collision
             if (!hit) return true;
             var h = new ShapeCastHit
             {
-                Shape = new ShapeHandle(shape, s.Generation[shape]),
+                Shape = new ShapeHandle(shape, s.Generation[shape], World.Id),
                 Body = World.BodyHandleOf(s.Body[shape]),
                 Point = point,
                 Normal = normal,

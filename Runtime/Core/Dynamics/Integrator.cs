@@ -43,8 +43,36 @@ namespace Fulcrum.Dynamics
             w += dt * (b.InverseInertiaWorld[i] * b.Torque[i]);
             if (b.LinearDamping[i] > 0) v *= 1f / (1f + dt * b.LinearDamping[i]);
             if (b.AngularDamping[i] > 0) w *= 1f / (1f + dt * b.AngularDamping[i]);
-            float speed2 = v.LengthSquared();
-            if (speed2 > maxSpeed * maxSpeed) v *= maxSpeed / MathF.Sqrt(speed2);
+            ClampSpeed(maxSpeed, b.Radius[i], ref v, ref w);
+        }
+
+        /// <summary>
+        /// Caps |w| at <see cref="Limits.MaxAngularSpeed"/>, the centre's speed |v| at
+        /// <paramref name="maxSpeed"/>, then |w| so that no point within <paramref name="radius"/>
+        /// of the centre moves faster than <paramref name="maxSpeed"/> (|v| + |w| r &lt;= maxSpeed,
+        /// a bound on |v + w x r|): the spin gets what the centre leaves of the cap. Lengths are taken
+        /// in double when the float square overflows, so a velocity of 3e38 is clamped to the
+        /// cap, not zeroed.
+        /// </summary>
+        internal static void ClampSpeed(float maxSpeed, float radius, ref Vector3 v, ref Vector3 w)
+        {
+            float w2 = w.LengthSquared();
+            if (!(w2 <= Limits.MaxAngularSpeed * Limits.MaxAngularSpeed))
+                w *= (float)(Limits.MaxAngularSpeed / Limits.Length(w));
+            float v2 = v.LengthSquared();
+            float vs;
+            if (v2 <= maxSpeed * maxSpeed) vs = MathF.Sqrt(v2);
+            else
+            {
+                // The centre above the cap: clamp it (the scale in double, as |v| may overflow float).
+                v *= (float)(maxSpeed / Limits.Length(v));
+                vs = maxSpeed;
+            }
+            if (!(radius > 0)) return;
+            // Then the spin gets what is left of the cap at the body's farthest point.
+            float ws = MathF.Sqrt(w.LengthSquared()) * radius;
+            float left = maxSpeed - vs;
+            if (ws > left) w *= left / ws;
         }
 
         /// <summary>

@@ -57,9 +57,13 @@ namespace Fulcrum.Mathematics
         public static Quaternion Rotation(Quaternion q, string name)
         {
             if (!IsFinite(q)) throw new ArgumentException($"{name} must be finite, got {q}.", name);
-            float len = q.Length();
-            if (!(len > 1e-6f)) throw new ArgumentException($"{name} must be a non-zero quaternion, got {q}.", name);
-            return Quaternion.Multiply(q, 1f / len);
+            float lenF = q.Length();
+            if (lenF > 1e-6f && float.IsFinite(lenF)) return Quaternion.Multiply(q, 1f / lenF);
+            // In double: the float length of a quaternion of 1e20s overflows to infinity and
+            // would normalise it to zero.
+            double len = Math.Sqrt((double)q.X * q.X + (double)q.Y * q.Y + (double)q.Z * q.Z + (double)q.W * q.W);
+            if (!(len > 1e-6)) throw new ArgumentException($"{name} must be a non-zero quaternion, got {q}.", name);
+            return new Quaternion((float)(q.X / len), (float)(q.Y / len), (float)(q.Z / len), (float)(q.W / len));
         }
     }
 }

@@ -20,8 +20,44 @@ namespace Fulcrum.Scenes
             return doc!;
         }
 
-        /// <summary>Reads and validates the scene file at <paramref name="path"/> (UTF-8).</summary>
-        public static SceneDocument Load(string path) => Parse(File.ReadAllText(path, Encoding.UTF8));
+        /// <summary>Reads and validates the scene file at <paramref name="path"/> (UTF-8; see <see cref="ReadText"/> for what is refused).</summary>
+        public static SceneDocument Load(string path) => Parse(ReadText(path));
+
+        /// <summary>Largest scene or mesh file read, bytes (64 MiB: a 1M-triangle mesh is about 40 MB of text).</summary>
+        public const long MaxFileBytes = 64L << 20;
+
+        /// <summary>
+        /// Reads a scene or mesh file as UTF-8 text, refusing up front, with an
+        /// <see cref="IOException"/> whose one-line message names the file: a missing file, a
+        /// directory, a file over <see cref="MaxFileBytes"/>, and anything that reports no size
+        /// (devices such as /dev/zero, FIFOs, /proc files: they are not regular files and could
+        /// read forever or block). The read itself stops at the cap too, in case the file grows.
+        /// </summary>
+        public static string ReadText(string path)
+        {
+            if (string.IsNullOrEmpty(path)) throw new IOException("no file path given");
+            if (Directory.Exists(path)) throw new IOException($"'{SceneError.Clip(path, 200)}' is a directory, not a file");
+            var info = new FileInfo(path);
+            if (!info.Exists) throw new FileNotFoundException($"'{SceneError.Clip(path, 200)}': no such file", path);
+            long length = info.Length;
+            if (length == 0)
+                throw new IOException($"'{SceneError.Clip(path, 200)}' is empty or not a regular file (a device, FIFO or /proc file): nothing to read");
+            if (length > MaxFileBytes)
+                throw new IOException($"'{SceneError.Clip(path, 200)}' is {length} bytes; at most {MaxFileBytes} (SceneFile.MaxFileBytes) are read");
+            using var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.Read);
+            var bytes = new byte[length];
+            int read = 0;
+            while (read < bytes.Length)
+            {
+                int n = stream.Read(bytes, read, bytes.Length - read);
+                if (n <= 0) break;
+                read += n;
+            }
+            if (stream.ReadByte() >= 0) throw new IOException($"'{SceneError.Clip(path, 200)}' grew while it was read");
+            // Decode like File.ReadAllText: a UTF-8 byte-order mark is dropped.
+            int skip = read >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF ? 3 : 0;
+            return new UTF8Encoding(false).GetString(bytes, skip, read - skip);
+        }
 
         /// <summary>
         /// Reads and validates a scene, returning every problem found (empty when valid).

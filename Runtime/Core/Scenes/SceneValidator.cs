@@ -56,15 +56,16 @@ namespace Fulcrum.Scenes
                 const string root = JsonPath.Root;
                 if (doc.Format != SceneDocument.CurrentFormat)
                     Error(P(root, "format"), $"must be \"{SceneDocument.CurrentFormat}\", got {JsonPath.Quote(doc.Format ?? "")}");
-                Finite(doc.Gravity, P(root, "gravity"));
-                Positive(doc.Timestep, P(root, "timestep"));
+                if (Finite(doc.Gravity, P(root, "gravity")) && Limits.Length(doc.Gravity) > Limits.MaxGravity)
+                    Error(P(root, "gravity"), $"must have magnitude at most {F(Limits.MaxGravity)} m/s^2 (Limits.MaxGravity), got {V(doc.Gravity)}");
+                if (Positive(doc.Timestep, P(root, "timestep"))) Upto(doc.Timestep, Limits.MinTimeStep, Limits.MaxTimeStep, P(root, "timestep"), "Limits.MinTimeStep/MaxTimeStep");
                 string solver = P(root, "solver");
                 if (doc.Solver == null) Error(solver, "must not be null");
                 else
                 {
                     if (doc.Solver.Type != SolverType.Pgs && doc.Solver.Type != SolverType.Tgs) Error(P(solver, "type"), "must be pgs or tgs");
-                    AtLeast(doc.Solver.Iterations, 1, P(solver, "iterations"));
-                    AtLeast(doc.Solver.Substeps, 1, P(solver, "substeps"));
+                    if (AtLeast(doc.Solver.Iterations, 1, P(solver, "iterations"))) IntInRange(doc.Solver.Iterations, 1, Limits.MaxIterations, P(solver, "iterations"));
+                    if (AtLeast(doc.Solver.Substeps, 1, P(solver, "substeps"))) IntInRange(doc.Solver.Substeps, 1, Limits.MaxSubsteps, P(solver, "substeps"));
                     if (doc.Solver.ContactHertz is float contactHertz) Positive(contactHertz, P(solver, "contactHertz"));
                     if (doc.Solver.JointHertz is float jointHertz) Positive(jointHertz, P(solver, "jointHertz"));
                     if (doc.Solver.ManifoldReuse is float reuse) NonNegative(reuse, P(solver, "manifoldReuse"));
@@ -105,10 +106,10 @@ namespace Fulcrum.Scenes
                 MassAndMaterial(b.Mass, b.Material, b.Type, path);
                 if (b.Density is float density && Positive(density, P(path, "density")) && b.Mass != null)
                     Error(P(path, "density"), "mass and density are both given: give one");
-                Finite(b.Position, P(path, "position"));
+                Coordinate(b.Position, P(path, "position"));
                 Rotation(b.Rotation, P(path, "rotation"));
-                Finite(b.Velocity, P(path, "velocity"));
-                Finite(b.AngularVelocity, P(path, "angularVelocity"));
+                Speed(b.Velocity, P(path, "velocity"));
+                Speed(b.AngularVelocity, P(path, "angularVelocity"));
                 if (b.Type == BodyType.Static)
                 {
                     if (b.Velocity != Vector3.Zero) Error(P(path, "velocity"), "a static body cannot move: must be [0, 0, 0]");
@@ -126,7 +127,7 @@ namespace Fulcrum.Scenes
                 if (mass is float kg)
                 {
                     if (type != BodyType.Dynamic) Error(P(path, "mass"), $"a {SceneNames.Of(type)} body has no mass: remove it or make the body dynamic");
-                    else Positive(kg, P(path, "mass"));
+                    else if (Positive(kg, P(path, "mass"))) Upto(kg, Limits.MinMass, Limits.MaxMass, P(path, "mass"), "Limits.MinMass/MaxMass");
                 }
             }
 
@@ -135,24 +136,27 @@ namespace Fulcrum.Scenes
                 switch (s)
                 {
                     case SceneSphere sphere:
-                        Positive(sphere.Radius, P(path, "radius"));
+                        Size(sphere.Radius, P(path, "radius"));
                         break;
                     case SceneBox box:
-                        Positive(box.HalfExtents, P(path, "halfExtents"));
+                        Size(box.HalfExtents, P(path, "halfExtents"));
                         break;
                     case SceneCapsule capsule:
-                        Positive(capsule.Radius, P(path, "radius"));
-                        NonNegative(capsule.HalfHeight, P(path, "halfHeight"));
+                        Size(capsule.Radius, P(path, "radius"));
+                        if (NonNegative(capsule.HalfHeight, P(path, "halfHeight"))) Upto(capsule.HalfHeight, 0, Limits.MaxShapeSize, P(path, "halfHeight"), "Limits.MaxShapeSize");
                         break;
                     case SceneConvex convex:
                         if (convex.Points.Count < 4) Error(P(path, "points"), $"a convex hull needs at least 4 points, got {convex.Points.Count}");
-                        for (int i = 0; i < convex.Points.Count; i++) Finite(convex.Points[i], JsonPath.Index(P(path, "points"), i));
+                        if (convex.Points.Count > Limits.MaxHullPoints)
+                            Error(P(path, "points"), $"at most {Limits.MaxHullPoints} points (Limits.MaxHullPoints), got {convex.Points.Count}");
+                        else
+                            for (int i = 0; i < convex.Points.Count; i++) Extent(convex.Points[i], JsonPath.Index(P(path, "points"), i));
                         break;
                     case ScenePlane plane:
                         if (child) Error(P(path, "type"), "a plane cannot be a compound child");
                         else if (!isStatic) Error(P(path, "type"), "a plane can only be the shape of a static body");
                         if (Finite(plane.Normal, P(path, "normal")) && !(plane.Normal.Length() > 1e-6f)) Error(P(path, "normal"), "must be non-zero");
-                        Finite(plane.Offset, P(path, "offset"));
+                        if (Finite(plane.Offset, P(path, "offset"))) Upto(plane.Offset, -Limits.MaxPosition, Limits.MaxPosition, P(path, "offset"), "Limits.MaxPosition");
                         break;
                     case SceneMesh mesh:
                         if (child) Error(P(path, "type"), "a mesh cannot be a compound child");
@@ -169,7 +173,7 @@ namespace Fulcrum.Scenes
                             string cp = JsonPath.Index(children, i);
                             if (c.Shape == null) Error(P(cp, "shape"), "missing required field");
                             else Shape(c.Shape, P(cp, "shape"), isStatic, child: true);
-                            Finite(c.Position, P(cp, "position"));
+                            Extent(c.Position, P(cp, "position"));
                             Rotation(c.Rotation, P(cp, "rotation"));
                         }
                         break;
@@ -180,7 +184,7 @@ namespace Fulcrum.Scenes
             {
                 string vertices = P(path, "vertices"), triangles = P(path, "triangles");
                 if (mesh.Vertices.Count < 3) Error(vertices, $"a mesh needs at least 3 vertices, got {mesh.Vertices.Count}");
-                for (int i = 0; i < mesh.Vertices.Count; i++) Finite(mesh.Vertices[i], JsonPath.Index(vertices, i));
+                for (int i = 0; i < mesh.Vertices.Count; i++) Coordinate(mesh.Vertices[i], JsonPath.Index(vertices, i));
                 if (mesh.Triangles.Count == 0 || mesh.Triangles.Count % 3 != 0)
                     Error(triangles, $"needs at least one triangle of 3 indices, got {mesh.Triangles.Count} indices");
                 for (int i = 0; i < mesh.Triangles.Count; i++)
@@ -202,9 +206,9 @@ namespace Fulcrum.Scenes
                     string path = JsonPath.Index("$.generators", k);
                     int before = Errors.Count;
                     if (g.Name != null && g.Name.Length == 0) Error(P(path, "name"), "must be a non-empty name (or left out)");
-                    Finite(g.At, P(path, "at"));
-                    Positive(g.Size, P(path, "size"));
-                    NonNegative(g.Spacing, P(path, "spacing"));
+                    Coordinate(g.At, P(path, "at"));
+                    Size(g.Size, P(path, "size"));
+                    if (NonNegative(g.Spacing, P(path, "spacing"))) Upto(g.Spacing, 0, Limits.MaxShapeSize, P(path, "spacing"), "Limits.MaxShapeSize");
                     MassAndMaterial(g.Mass, g.Material, BodyType.Dynamic, path);
                     switch (g)
                     {
@@ -213,7 +217,7 @@ namespace Fulcrum.Scenes
                         case SceneChain c: AtLeast(c.Count, 1, P(path, "count")); break;
                         case SceneDominoes d:
                             AtLeast(d.Count, 1, P(path, "count"));
-                            Finite(d.TipSpeed, P(path, "tipSpeed"));
+                            if (Finite(d.TipSpeed, P(path, "tipSpeed"))) Upto(d.TipSpeed, -Limits.MaxInputSpeed, Limits.MaxInputSpeed, P(path, "tipSpeed"), "Limits.MaxInputSpeed");
                             break;
                         case SceneWall w:
                             if (AtLeast(w.Count, 1, P(path, "count")) && w.Staggered && w.Count < 2)
@@ -229,8 +233,9 @@ namespace Fulcrum.Scenes
                             break;
                     }
                     if (Errors.Count != before) { ok = false; continue; }
-                    total += g.BodyCount;
-                    if (total > MaxBodies) { Error(path, $"the scene would have more than {MaxBodies} bodies"); ok = false; }
+                    long count = g.BodyCount;
+                    if (count < 0 || count > MaxBodies - total) { Error(path, $"the scene would have more than {MaxBodies} bodies"); ok = false; }
+                    else total += count;
                 }
                 return ok;
             }
@@ -305,8 +310,8 @@ namespace Fulcrum.Scenes
                 if (j.BodyA != null && !Exists(j.BodyA, bodies)) Error(P(path, "bodyA"), $"no body named '{j.BodyA}'");
                 if (j.BodyB != null && !Exists(j.BodyB, bodies)) Error(P(path, "bodyB"), $"no body named '{j.BodyB}'");
                 if (j.BodyA != null && j.BodyA == j.BodyB) Error(P(path, "bodyB"), "a joint needs two different bodies");
-                Finite(j.AnchorA, P(path, "anchorA"));
-                Finite(j.AnchorB, P(path, "anchorB"));
+                Coordinate(j.AnchorA, P(path, "anchorA"));
+                Coordinate(j.AnchorB, P(path, "anchorB"));
                 if (j.BreakForce is float force) Positive(force, P(path, "breakForce"));
                 if (j.BreakTorque is float torque) Positive(torque, P(path, "breakTorque"));
                 if (j.FrictionTorque is float friction) NonNegative(friction, P(path, "frictionTorque"));
@@ -354,9 +359,9 @@ namespace Fulcrum.Scenes
                 if (s.Mesh == null) Error(mesh, "missing required field");
                 else SoftMesh(s.Mesh, mesh);
                 SoftMaterial(s.Material, P(path, "material"));
-                Finite(s.Position, P(path, "position"));
+                Coordinate(s.Position, P(path, "position"));
                 Rotation(s.Rotation, P(path, "rotation"));
-                Finite(s.Velocity, P(path, "velocity"));
+                Speed(s.Velocity, P(path, "velocity"));
                 SoftSettings(s, path);
                 for (int i = 0; i < s.Pinned.Count; i++)
                 {
@@ -513,6 +518,38 @@ namespace Fulcrum.Scenes
                 return false;
             }
 
+            // The API's limits (see Limits), so that a scene the validator passes builds without an ArgumentException.
+            void Coordinate(Vector3 v, string path) => Bounded(v, Limits.MaxPosition, path, "Limits.MaxPosition");
+
+            void Extent(Vector3 v, string path) => Bounded(v, Limits.MaxShapeSize, path, "Limits.MaxShapeSize");
+
+            void Bounded(Vector3 v, float max, string path, string limit)
+            {
+                if (!Finite(v, path)) return;
+                if (System.Math.Abs(v.X) > max || System.Math.Abs(v.Y) > max || System.Math.Abs(v.Z) > max)
+                    Error(path, $"must be within +-{F(max)} on every axis ({limit}), got {V(v)}");
+            }
+
+            void Speed(Vector3 v, string path)
+            {
+                if (Finite(v, path) && Limits.Length(v) > Limits.MaxInputSpeed)
+                    Error(path, $"must have magnitude at most {F(Limits.MaxInputSpeed)} (Limits.MaxInputSpeed), got {V(v)}");
+            }
+
+            void Size(float v, string path)
+            {
+                if (Positive(v, path) && (v > Limits.MaxShapeSize || v < Limits.MinShapeSize))
+                    Error(path, $"must be in [{F(Limits.MinShapeSize)}, {F(Limits.MaxShapeSize)}] m (Limits.MinShapeSize/MaxShapeSize), got {F(v)}");
+            }
+
+            void Size(Vector3 v, string path)
+            {
+                Positive(v, path);
+                if (Mathematics.Validate.IsFinite(v) && v.X > 0 && v.Y > 0 && v.Z > 0
+                    && (System.Math.Max(v.X, System.Math.Max(v.Y, v.Z)) > Limits.MaxShapeSize || System.Math.Min(v.X, System.Math.Min(v.Y, v.Z)) < Limits.MinShapeSize))
+                    Error(path, $"must be in [{F(Limits.MinShapeSize)}, {F(Limits.MaxShapeSize)}] m on every axis (Limits.MinShapeSize/MaxShapeSize), got {V(v)}");
+            }
+
             bool Positive(float v, string path)
             {
                 if (float.IsFinite(v) && v > 0) return true;
@@ -526,10 +563,18 @@ namespace Fulcrum.Scenes
                 Error(path, $"must be > 0 on every axis, got {V(v)}");
             }
 
-            void NonNegative(float v, string path)
+            bool NonNegative(float v, string path)
             {
-                if (float.IsFinite(v) && v >= 0) return;
+                if (float.IsFinite(v) && v >= 0) return true;
                 Error(path, $"must be >= 0, got {F(v)}");
+                return false;
+            }
+
+            // A value already known finite (and of the right sign) against a documented limit.
+            void Upto(float v, float lo, float hi, string path, string limit)
+            {
+                if (v >= lo && v <= hi) return;
+                Error(path, $"must be in [{F(lo)}, {F(hi)}] ({limit}), got {F(v)}");
             }
 
             void InRange(float v, float lo, float hi, string path)

@@ -65,10 +65,20 @@ namespace Fulcrum
         /// <summary>
         /// Builds the convex hull of a point cloud (shape frame, metres). Throws an
         /// <see cref="ArgumentException"/> naming "hull.points" when a point is not finite or
-        /// the cloud has fewer than 4 non-coplanar points (all equal, collinear or coplanar).
+        /// the cloud has fewer than 4 non-coplanar points (all equal, collinear or coplanar), has
+        /// more than <see cref="Limits.MaxHullPoints"/> points, or a coordinate beyond
+        /// <see cref="Limits.MaxShapeSize"/>.
         /// </summary>
         public static ConvexHull Create(ReadOnlySpan<Vector3> points)
         {
+            if (points.Length > Limits.MaxHullPoints)
+                throw new ArgumentException($"hull.points has {points.Length} points; at most {Limits.MaxHullPoints} (Limits.MaxHullPoints) are taken.", "hull.points");
+            for (int i = 0; i < points.Length; i++)
+            {
+                Vector3 p = points[i];
+                if (Math.Abs(p.X) > Limits.MaxShapeSize || Math.Abs(p.Y) > Limits.MaxShapeSize || Math.Abs(p.Z) > Limits.MaxShapeSize)
+                    throw new ArgumentException($"hull.points[{i}] must lie within +-{Limits.MaxShapeSize:G} m (Limits.MaxShapeSize), got {p}.", "hull.points");
+            }
             QuickHull.Build(points, "hull.points", out List<Vec3d> vertices, out List<int[]> faces, out _);
             return new ConvexHull(vertices, faces);
         }

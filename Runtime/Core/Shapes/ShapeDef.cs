@@ -58,6 +58,26 @@ namespace Fulcrum
             if (Geometry.Type == ShapeType.Sphere && Geometry.Radius == 0 && Geometry.Data == null)
                 throw new System.ArgumentException("shape.Geometry is unset: build it with ShapeGeometry.Sphere/Box/Capsule/Plane/...", "Geometry");
             Mathematics.Validate.Finite(LocalPose.Position, "shape.LocalPose.Position");
+            Limits.CheckPosition(LocalPose.Position, "shape.LocalPose.Position");
+            if (Geometry.Type == ShapeType.Plane)
+            {
+                if (System.Math.Abs(Geometry.Offset) > Limits.MaxPosition)
+                    throw new System.ArgumentException($"plane.offset must be within +-{Limits.MaxPosition:G} m (Limits.MaxPosition), got {Geometry.Offset}.", "Geometry");
+            }
+            else
+            {
+                // Every size a pair function or a mass formula squares or cubes: its bounds.
+                Aabb box = Geometry.ComputeAabb(Pose.Identity);
+                Vector3 far = Vector3.Max(Vector3.Abs(box.Min), Vector3.Abs(box.Max));
+                float size = System.Math.Max(far.X, System.Math.Max(far.Y, far.Z));
+                float thinnest = Geometry.Type == ShapeType.Sphere || Geometry.Type == ShapeType.Capsule ? Geometry.Radius
+                    : Geometry.Type == ShapeType.Box ? System.Math.Min(Geometry.HalfExtents.X, System.Math.Min(Geometry.HalfExtents.Y, Geometry.HalfExtents.Z))
+                    : Limits.MinShapeSize;
+                if (!(thinnest >= Limits.MinShapeSize))
+                    throw new System.ArgumentException($"shape.Geometry ({Geometry.Type}) is {thinnest:G} m thin; at least {Limits.MinShapeSize:G} m (Limits.MinShapeSize).", "Geometry");
+                if (!(size <= Limits.MaxShapeSize))
+                    throw new System.ArgumentException($"shape.Geometry ({Geometry.Type}) reaches {size:G} m from its origin; at most {Limits.MaxShapeSize:G} m (Limits.MaxShapeSize).", "Geometry");
+            }
             Mathematics.Validate.Rotation(LocalPose.Rotation, "shape.LocalPose.Rotation");
             Mathematics.Validate.NonNegative(Density, "shape.Density");
             Mathematics.Validate.NonNegative(Friction, "shape.Friction");

@@ -15,14 +15,14 @@ namespace Fulcrum
             ThrowIfInStep();
             if (def.Type != BodyType.Static && def.Type != BodyType.Kinematic && def.Type != BodyType.Dynamic)
                 throw new ArgumentException($"body.Type must be Static, Kinematic or Dynamic, got {def.Type}.", nameof(def));
-            Validate.Finite(def.Position, "body.Position");
+            Limits.CheckPosition(def.Position, "body.Position");
             Quaternion rotation = Validate.Rotation(def.Rotation, "body.Rotation");
-            Validate.Finite(def.LinearVelocity, "body.LinearVelocity");
-            Validate.Finite(def.AngularVelocity, "body.AngularVelocity");
+            Limits.CheckSpeed(def.LinearVelocity, "body.LinearVelocity");
+            Limits.CheckSpeed(def.AngularVelocity, "body.AngularVelocity");
             Validate.NonNegative(def.LinearDamping, "body.LinearDamping");
             Validate.NonNegative(def.AngularDamping, "body.AngularDamping");
-            Validate.Finite(def.GravityScale, "body.GravityScale");
-            if (def.Mass != 0) Validate.Positive(def.Mass, "body.Mass");
+            Limits.CheckGravityScale(def.GravityScale, "body.GravityScale");
+            if (def.Mass != 0) Limits.CheckMass(def.Mass, "body.Mass");
 
             BodyStorage b = Bodies;
             int i = b.Allocate();
@@ -50,7 +50,7 @@ namespace Fulcrum
             b.Name[i] = def.Name;
             b.UserData[i] = def.UserData;
             UpdateMassProperties(i);
-            return new BodyHandle(i, b.Generation[i]);
+            return new BodyHandle(i, b.Generation[i], Id);
         }
 
         /// <summary>
@@ -74,7 +74,7 @@ namespace Fulcrum
         }
 
         /// <summary>True when the handle names a live body of this world.</summary>
-        public bool IsValid(BodyHandle body) => Bodies.IsLive(body);
+        public bool IsValid(BodyHandle body) => body.WorldId == Id && Bodies.IsLive(body);
 
         /// <summary>A view for reading and writing one body; throws if the handle is stale.</summary>
         public BodyRef GetBody(BodyHandle body) => new BodyRef(this, Slot(body), body.Generation);
@@ -86,7 +86,7 @@ namespace Fulcrum
             for (int k = 0; k < n; k++)
             {
                 int i = Bodies.Active[k];
-                into[k] = new BodyHandle(i, Bodies.Generation[i]);
+                into[k] = new BodyHandle(i, Bodies.Generation[i], Id);
             }
             return n;
         }
@@ -94,10 +94,11 @@ namespace Fulcrum
         /// <summary>The slot of a live body, or <see cref="StaleHandleException"/>.</summary>
         internal int Slot(BodyHandle body)
         {
+            if (!body.IsNone && body.WorldId != Id) throw ForeignHandle(body.ToString(), body.WorldId);
             if (!Bodies.IsLive(body))
                 throw new StaleHandleException(body.IsNone
                     ? "The body handle is None."
-                    : $"{body} does not name a live body: it was destroyed, or belongs to another world.");
+                    : $"{body} does not name a live body: it was destroyed, or was never issued by this world.");
             return body.Index;
         }
 
@@ -110,9 +111,12 @@ namespace Fulcrum
             ThrowIfInStep();
             int i = Slot(body);
             mass.Validate("mass");
+            Limits.CheckMass(mass.Mass, "mass.Mass");
+            Limits.CheckPosition(mass.Center, "mass.Center");
             if (Bodies.Type[i] != BodyType.Dynamic) throw new InvalidOperationException($"{Describe(i)} is not dynamic: only dynamic bodies have mass.");
             ApplyMass(i, mass);
             Bodies.MassOverride[i] = -1; // explicit distribution: shapes no longer decide
+            UpdateRadius(i);
         }
 
         /// <summary>Returns to mass properties computed from the shapes' densities.</summary>
@@ -156,11 +160,30 @@ namespace Fulcrum
                 b.InverseInertiaWorld[i] = default;
                 return;
             }
-            if (b.MassOverride[i] < 0) return; // set explicitly
-            MassProperties m = ShapeMass(i);
-            if (!(m.Mass > 0)) m = new MassProperties(1f, Vector3.Zero, Mat3.Identity);
-            if (b.MassOverride[i] > 0) m = m.WithMass(b.MassOverride[i]);
-            ApplyMass(i, m);
+            if (b.MassOverride[i] >= 0) // else set explicitly
+            {
+                MassProperties m = ShapeMass(i);
+                if (!(m.Mass > 0)) m = new MassProperties(1f, Vector3.Zero, Mat3.Identity);
+                if (b.MassOverride[i] > 0) m = m.WithMass(b.MassOverride[i]);
+                ApplyMass(i, m);
+            }
+            UpdateRadius(i);
+        }
+
+        // The farthest point of the body's shapes (their local bounds' corners) from the centre
+        // of mass: with it the integrator caps spin so that no point outruns MaxLinearSpeed.
+        void UpdateRadius(int i)
+        {
+            float r2 = 0;
+            Vector3 c = Bodies.LocalCenter[i];
+            for (int s = Bodies.FirstShape[i]; s >= 0; s = Shapes.NextInBody[s])
+            {
+                if (Shapes.Geometry[s].IsStaticOnly) continue;
+                Aabb box = Shapes.Geometry[s].ComputeAabb(Shapes.LocalPose[s]);
+                Vector3 far = Vector3.Max(Vector3.Abs(box.Min - c), Vector3.Abs(box.Max - c));
+                r2 = MathF.Max(r2, far.LengthSquared());
+            }
+            Bodies.Radius[i] = MathF.Sqrt(r2);
         }
 
         void ApplyMass(int i, in MassProperties m)
@@ -190,8 +213,9 @@ namespace Fulcrum
         public void AddForce(BodyHandle body, Vector3 force, ForceMode mode = ForceMode.Force)
         {
             int i = Slot(body);
-            Validate.Finite(force, nameof(force));
+            Limits.CheckForce(force, nameof(force));
             ThrowIfInStep();
+            CheckLinear(i, force, mode, nameof(force));
             ApplyLinear(i, force, mode);
         }
 
@@ -202,20 +226,62 @@ namespace Fulcrum
         public void AddForceAtPosition(BodyHandle body, Vector3 force, Vector3 worldPoint, ForceMode mode = ForceMode.Force)
         {
             int i = Slot(body);
-            Validate.Finite(force, nameof(force));
-            Validate.Finite(worldPoint, nameof(worldPoint));
+            Limits.CheckForce(force, nameof(force));
+            Limits.CheckPosition(worldPoint, nameof(worldPoint));
             ThrowIfInStep();
+            Vector3 torque = Vector3.Cross(worldPoint - Bodies.Center[i], force);
+            Limits.CheckForce(torque, nameof(worldPoint));
+            CheckLinear(i, force, mode, nameof(force));
+            CheckAngular(i, torque, mode, nameof(force));
             ApplyLinear(i, force, mode);
-            ApplyAngular(i, Vector3.Cross(worldPoint - Bodies.Center[i], force), mode);
+            ApplyAngular(i, torque, mode);
         }
 
         /// <summary>Applies a torque (or angular acceleration, impulse, velocity change) in world axes. Dynamic bodies only. Wakes the body.</summary>
         public void AddTorque(BodyHandle body, Vector3 torque, ForceMode mode = ForceMode.Force)
         {
             int i = Slot(body);
-            Validate.Finite(torque, nameof(torque));
+            Limits.CheckForce(torque, nameof(torque));
             ThrowIfInStep();
+            CheckAngular(i, torque, mode, nameof(torque));
             ApplyAngular(i, torque, mode);
+        }
+
+        // What ApplyLinear would store, checked first (all-or-nothing): the accumulated force
+        // stays within Limits.MaxForce and a velocity change within Limits.MaxInputSpeed.
+        // The message is built only on failure: AddForce runs every frame and must not allocate.
+        void CheckLinear(int i, Vector3 f, ForceMode mode, string name)
+        {
+            BodyStorage b = Bodies;
+            if (b.Type[i] != BodyType.Dynamic) return;
+            switch (mode)
+            {
+                case ForceMode.Force: CheckSum(b.Force[i] + f, Limits.MaxForce, name, "the force accumulated this step"); break;
+                case ForceMode.Acceleration: CheckSum(b.Force[i] + f * b.Mass[i], Limits.MaxForce, name, "mass x acceleration accumulated this step"); break;
+                case ForceMode.Impulse: CheckSum(b.LinearVelocity[i] + f * b.InverseMass[i], Limits.MaxInputSpeed, name, "the velocity after the impulse"); break;
+                case ForceMode.VelocityChange: CheckSum(b.LinearVelocity[i] + f, Limits.MaxInputSpeed, name, "the velocity after the change"); break;
+                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
+            }
+        }
+
+        void CheckAngular(int i, Vector3 t, ForceMode mode, string name)
+        {
+            BodyStorage b = Bodies;
+            if (b.Type[i] != BodyType.Dynamic) return;
+            switch (mode)
+            {
+                case ForceMode.Force: CheckSum(b.Torque[i] + t, Limits.MaxForce, name, "the torque accumulated this step"); break;
+                case ForceMode.Acceleration: CheckSum(b.Torque[i] + WorldInertia(i) * t, Limits.MaxForce, name, "inertia x angular acceleration accumulated this step"); break;
+                case ForceMode.Impulse: CheckSum(b.AngularVelocity[i] + b.InverseInertiaWorld[i] * t, Limits.MaxInputSpeed, name, "the angular velocity after the impulse"); break;
+                case ForceMode.VelocityChange: CheckSum(b.AngularVelocity[i] + t, Limits.MaxInputSpeed, name, "the angular velocity after the change"); break;
+                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
+            }
+        }
+
+        static void CheckSum(Vector3 result, float limit, string name, string what)
+        {
+            if (Validate.IsFinite(result) && Limits.Length(result) <= limit) return;
+            throw new ArgumentException($"{name}: {what} would be {result}, beyond {limit:G} (Limits.MaxForce/MaxInputSpeed).", name);
         }
 
         void ApplyLinear(int i, Vector3 f, ForceMode mode)
@@ -264,7 +330,7 @@ namespace Fulcrum
         public void SetKinematicTarget(BodyHandle body, Vector3 position, Quaternion rotation)
         {
             int i = Slot(body);
-            Validate.Finite(position, nameof(position));
+            Limits.CheckPosition(position, nameof(position));
             Quaternion q = Validate.Rotation(rotation, nameof(rotation));
             ThrowIfInStep();
             if (Bodies.Type[i] != BodyType.Kinematic)

@@ -20,6 +20,18 @@ namespace Fulcrum
             BodyStorage b = Bodies;
             BodyType old = b.Type[i];
             if (old == type) return;
+            if (type == BodyType.Dynamic && b.MassOverride[i] >= 0)
+            {
+                // A static body's shapes were never weighed: check the mass they give before
+                // anything changes (a huge dense static box would become an infinite mass).
+                MassProperties m = ShapeMass(i);
+                if (m.Mass > 0 || !float.IsFinite(m.Mass))
+                {
+                    if (b.MassOverride[i] == 0) Limits.CheckMass(m.Mass, "type (the body's mass from its shapes)");
+                    if (!float.IsFinite(m.Mass) || !m.Inertia.IsFinite)
+                        throw new ArgumentException($"type: {Describe(i)}'s shapes give mass properties that overflow (mass {m.Mass:G} kg); it cannot become dynamic.", nameof(type));
+                }
+            }
             bool staticChanges = (old == BodyType.Static) != (type == BodyType.Static);
             if (staticChanges)
                 for (int s = b.FirstShape[i]; s >= 0; s = Shapes.NextInBody[s]) OnShapeRemoved(s);

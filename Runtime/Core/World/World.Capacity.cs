@@ -15,11 +15,11 @@ namespace Fulcrum
         /// sizes work). Manifolds are planned for the smaller of the pairs and 4 per body.
         /// Counts already reached are kept; nothing shrinks.
         /// </summary>
-        /// <exception cref="ArgumentException">A count is negative.</exception>
+        /// <exception cref="ArgumentException">A count is negative or above <see cref="Limits.MaxReserve"/>.</exception>
         public void Reserve(int bodies, int contactPairs)
         {
-            if (bodies < 0) throw new ArgumentException($"bodies must be >= 0, got {bodies}.", nameof(bodies));
-            if (contactPairs < 0) throw new ArgumentException($"contactPairs must be >= 0, got {contactPairs}.", nameof(contactPairs));
+            if (bodies < 0 || bodies > Limits.MaxReserve) throw new ArgumentException($"bodies must be in 0..{Limits.MaxReserve} (Limits.MaxReserve), got {bodies}.", nameof(bodies));
+            if (contactPairs < 0 || contactPairs > Limits.MaxReserve) throw new ArgumentException($"contactPairs must be in 0..{Limits.MaxReserve} (Limits.MaxReserve), got {contactPairs}.", nameof(contactPairs));
             if (_inStep) throw new InvalidOperationException("Reserve cannot be called during Step.");
             // Slots, not live counts: every array below is indexed by slot.
             int slots = Math.Max(bodies, Bodies.SlotCount) + 1;

@@ -116,10 +116,10 @@ namespace Fulcrum
             {
                 Kind = kind,
                 IsSensor = (ct.Flags & ContactFlags.Sensor) != 0,
-                BodyA = new BodyHandle(ct.BodyA, Bodies.Generation[ct.BodyA]),
-                BodyB = new BodyHandle(ct.BodyB, Bodies.Generation[ct.BodyB]),
-                ShapeA = new ShapeHandle(ct.ShapeA, Shapes.Generation[ct.ShapeA]),
-                ShapeB = new ShapeHandle(ct.ShapeB, Shapes.Generation[ct.ShapeB]),
+                BodyA = new BodyHandle(ct.BodyA, Bodies.Generation[ct.BodyA], Id),
+                BodyB = new BodyHandle(ct.BodyB, Bodies.Generation[ct.BodyB], Id),
+                ShapeA = new ShapeHandle(ct.ShapeA, Shapes.Generation[ct.ShapeA], Id),
+                ShapeB = new ShapeHandle(ct.ShapeB, Shapes.Generation[ct.ShapeB], Id),
             };
             if (kind == ContactEventKind.End || e.IsSensor) return e;
             Vector3 sum = Vector3.Zero;

@@ -33,8 +33,8 @@ namespace Fulcrum
             int b = def.BodyB.IsNone ? -1 : Slot(def.BodyB);
             if (a < 0 && b < 0) throw new ArgumentException("joint.BodyB: a joint needs at least one body; both ends are the world.", "joint.BodyB");
             if (a == b) throw new ArgumentException($"joint.BodyB must differ from joint.BodyA: a joint between {Describe(a)} and itself.", "joint.BodyB");
-            Validate.Finite(def.AnchorA, "joint.AnchorA");
-            Validate.Finite(def.AnchorB, "joint.AnchorB");
+            Limits.CheckPosition(def.AnchorA, "joint.AnchorA");
+            Limits.CheckPosition(def.AnchorB, "joint.AnchorB");
             bool usesAxisA = def.Kind == JointKind.Hinge || def.Kind == JointKind.Prismatic || def.Kind == JointKind.ConeTwist || def.Kind == JointKind.Fixed;
             bool usesAxisB = def.Kind == JointKind.Hinge || def.Kind == JointKind.ConeTwist;
             if (usesAxisA) Direction(def.AxisA, "joint.AxisA");
@@ -89,13 +89,24 @@ namespace Fulcrum
             if (!def.CollideConnected && a >= 0 && b >= 0) DestroyContactsBetween(a, b);
             if (a >= 0) Wake(a);
             if (b >= 0) Wake(b);
-            return new JointHandle(slot, Joints.Generation[slot]);
+            return new JointHandle(slot, Joints.Generation[slot], Id);
         }
 
         static void Direction(Vector3 v, string name)
         {
             Validate.Finite(v, name);
             if (!(v.LengthSquared() > 1e-12f)) throw new ArgumentException($"{name} must be a non-zero direction, got {v}.", name);
+            // Normalising squares the components: 1e20 would overflow to infinity and give NaN.
+            if (float.IsInfinity(v.LengthSquared())) throw new ArgumentException($"{name} is too long to normalise in single precision (components up to about 1e18), got {v}.", name);
+        }
+
+        // A motor's target speed and strength within the input limits (Limits.MaxInputSpeed, Limits.MaxForce).
+        static void CheckMotor(float speed, float max, string speedName, string maxName)
+        {
+            if (Math.Abs(speed) > Limits.MaxInputSpeed)
+                throw new ArgumentException($"{speedName} must be within +-{Limits.MaxInputSpeed:G} (Limits.MaxInputSpeed), got {speed}.", speedName);
+            if (max > Limits.MaxForce && !float.IsPositiveInfinity(max))
+                throw new ArgumentException($"{maxName} must be at most {Limits.MaxForce:G} (Limits.MaxForce) or infinity, got {max}.", maxName);
         }
 
         static void CheckJointNumbers(in JointDef d)
@@ -111,6 +122,7 @@ namespace Fulcrum
             Validate.Finite(d.MotorSpeed, "joint.MotorSpeed");
             Validate.NonNegative(d.MaxMotorTorque, "joint.MaxMotorTorque");
             Validate.NonNegative(d.MaxMotorForce, "joint.MaxMotorForce");
+            CheckMotor(d.MotorSpeed, Math.Max(d.MaxMotorTorque, d.MaxMotorForce), "joint.MotorSpeed", "joint.MaxMotorTorque");
             Validate.NonNegative(d.FrictionTorque, "joint.FrictionTorque");
             NotNaN(d.MinLength, "joint.MinLength");
             NotNaN(d.MaxLength, "joint.MaxLength");
@@ -225,14 +237,15 @@ namespace Fulcrum
         }
 
         /// <summary>True when the handle names a live joint of this world.</summary>
-        public bool IsValid(JointHandle joint) => Joints.IsLive(joint);
+        public bool IsValid(JointHandle joint) => joint.WorldId == Id && Joints.IsLive(joint);
 
         internal int JointSlot(JointHandle joint)
         {
+            if (!joint.IsNone && joint.WorldId != Id) throw ForeignHandle(joint.ToString(), joint.WorldId);
             if (!Joints.IsLive(joint))
                 throw new StaleHandleException(joint.IsNone
                     ? "The joint handle is None."
-                    : $"{joint} does not name a live joint: it was destroyed, or belongs to another world.");
+                    : $"{joint} does not name a live joint: it was destroyed, or was never issued by this world.");
             return joint.Index;
         }
 
@@ -283,6 +296,7 @@ namespace Fulcrum
             int slot = JointSlot(joint);
             Validate.Finite(speed, nameof(speed));
             Validate.NonNegative(maxForceOrTorque, nameof(maxForceOrTorque));
+            CheckMotor(speed, maxForceOrTorque, nameof(speed), nameof(maxForceOrTorque));
             ref JointData j = ref Joints.Data[slot];
             if (j.Kind != JointKind.Hinge && j.Kind != JointKind.Prismatic)
                 throw new InvalidOperationException($"A {j.Kind} joint has no motor.");
@@ -320,9 +334,9 @@ namespace Fulcrum
                 if (_jointBreakCount == _jointBreaks.Length) Array.Resize(ref _jointBreaks, _jointBreaks.Length * 2);
                 _jointBreaks[_jointBreakCount++] = new JointBreakEvent
                 {
-                    Joint = new JointHandle(slot, Joints.Generation[slot]),
-                    BodyA = j.BodyA < 0 ? BodyHandle.None : new BodyHandle(j.BodyA, Bodies.Generation[j.BodyA]),
-                    BodyB = j.BodyB < 0 ? BodyHandle.None : new BodyHandle(j.BodyB, Bodies.Generation[j.BodyB]),
+                    Joint = new JointHandle(slot, Joints.Generation[slot], Id),
+                    BodyA = j.BodyA < 0 ? BodyHandle.None : new BodyHandle(j.BodyA, Bodies.Generation[j.BodyA], Id),
+                    BodyB = j.BodyB < 0 ? BodyHandle.None : new BodyHandle(j.BodyB, Bodies.Generation[j.BodyB], Id),
                     Force = j.Force,
                     Torque = j.Torque,
                     Stress = j.Stress,

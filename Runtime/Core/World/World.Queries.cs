@@ -110,7 +110,7 @@ namespace Fulcrum
             _overlaps = q.Found;
             Array.Sort(_overlaps, 0, q.Count);
             int n = Math.Min(q.Count, results.Length);
-            for (int i = 0; i < n; i++) results[i] = new ShapeHandle(_overlaps[i], Shapes.Generation[_overlaps[i]]);
+            for (int i = 0; i < n; i++) results[i] = new ShapeHandle(_overlaps[i], Shapes.Generation[_overlaps[i]], Id);
             return q.Count;
         }
 
@@ -179,7 +179,7 @@ namespace Fulcrum
             return true;
         }
 
-        internal BodyHandle BodyHandleOf(int body) => new BodyHandle(body, Bodies.Generation[body]);
+        internal BodyHandle BodyHandleOf(int body) => new BodyHandle(body, Bodies.Generation[body], Id);
 
         // Recomputes the tight bounds of moving shapes at their current poses and moves the
         // proxies that left their fat boxes (they join the next step's pair search).

@@ -17,11 +17,13 @@ namespace Fulcrum
             def.Validate();
             if (def.Geometry.IsStaticOnly && Bodies.Type[b] != BodyType.Static)
                 throw new ArgumentException($"A {def.Geometry.Type} shape can only be attached to a static body; {Describe(b)} is {Bodies.Type[b]}.", nameof(def));
+            var localPose = new Pose(def.LocalPose.Position, Validate.Rotation(def.LocalPose.Rotation, "shape.LocalPose.Rotation"));
+            CheckMassWith(b, def, localPose);
 
             ShapeStorage s = Shapes;
             int i = s.Allocate();
             s.Geometry[i] = def.Geometry;
-            s.LocalPose[i] = new Pose(def.LocalPose.Position, Validate.Rotation(def.LocalPose.Rotation, "shape.LocalPose.Rotation"));
+            s.LocalPose[i] = localPose;
             s.Body[i] = b;
             s.Density[i] = def.Density;
             s.Friction[i] = def.Friction;
@@ -37,7 +39,27 @@ namespace Fulcrum
             s.WorldAabb[i] = def.Geometry.ComputeAabb(ShapeWorldPose(i));
             OnShapeAdded(i);
             UpdateMassProperties(b);
-            return new ShapeHandle(i, s.Generation[i]);
+            return new ShapeHandle(i, s.Generation[i], Id);
+        }
+
+        // The body's mass with the new shape, checked before anything changes, so a shape whose
+        // mass or inertia overflows (a 1e13 m box) or leaves the documented range is refused
+        // with the body as it was.
+        void CheckMassWith(int b, in ShapeDef def, in Pose localPose)
+        {
+            if (Bodies.Type[b] != BodyType.Dynamic || Bodies.MassOverride[b] < 0 || def.IsSensor || def.Density <= 0) return;
+            MassProperties m = def.Geometry.ComputeMass(def.Density).Transformed(localPose);
+            // Each shape on its own within the range too, so that removing the others later
+            // cannot leave a body lighter than Limits.MinMass.
+            if (Bodies.MassOverride[b] == 0 && def.Geometry.Type != ShapeType.Plane && def.Geometry.Type != ShapeType.TriangleMesh)
+                Limits.CheckMass(m.Mass, "shape.Density (this shape's mass)");
+            MassProperties total = ShapeMass(b);
+            if (total.Mass > 0 && m.Mass > 0) total = MassProperties.Combine(total, m);
+            else if (m.Mass > 0) total = m;
+            else return;
+            if (Bodies.MassOverride[b] == 0) Limits.CheckMass(total.Mass, "shape.Density (the body's mass from its shapes)");
+            if (!float.IsFinite(total.Mass) || !Validate.IsFinite(total.Center) || !total.Inertia.IsFinite)
+                throw new ArgumentException($"shape.Density: {Describe(b)}'s mass properties with this shape overflow (mass {total.Mass:G} kg); use a smaller shape or density.", "shape.Density");
         }
 
         /// <summary>Detaches and removes a shape; the body's mass is recomputed.</summary>
@@ -59,13 +81,13 @@ namespace Fulcrum
         }
 
         /// <summary>True when the handle names a live shape of this world.</summary>
-        public bool IsValid(ShapeHandle shape) => Shapes.IsLive(shape);
+        public bool IsValid(ShapeHandle shape) => shape.WorldId == Id && Shapes.IsLive(shape);
 
         /// <summary>The body a shape is attached to.</summary>
         public BodyHandle GetShapeBody(ShapeHandle shape)
         {
             int b = Shapes.Body[ShapeSlot(shape)];
-            return new BodyHandle(b, Bodies.Generation[b]);
+            return new BodyHandle(b, Bodies.Generation[b], Id);
         }
 
         /// <summary>The geometry of a shape.</summary>
@@ -82,16 +104,17 @@ namespace Fulcrum
         {
             int n = 0;
             for (int s = Bodies.FirstShape[Slot(body)]; s >= 0; s = Shapes.NextInBody[s], n++)
-                if (n < into.Length) into[n] = new ShapeHandle(s, Shapes.Generation[s]);
+                if (n < into.Length) into[n] = new ShapeHandle(s, Shapes.Generation[s], Id);
             return n;
         }
 
         internal int ShapeSlot(ShapeHandle shape)
         {
+            if (!shape.IsNone && shape.WorldId != Id) throw ForeignHandle(shape.ToString(), shape.WorldId);
             if (!Shapes.IsLive(shape))
                 throw new StaleHandleException(shape.IsNone
                     ? "The shape handle is None."
-                    : $"{shape} does not name a live shape: it was removed, or belongs to another world.");
+                    : $"{shape} does not name a live shape: it was removed, or was never issued by this world.");
             return shape.Index;
         }
 

@@ -11,12 +11,13 @@ namespace Fulcrum
         /// Advances the world by <paramref name="dt"/> seconds (a fixed step: keep the
         /// accumulator in the caller, or use <see cref="FixedStepper"/>). Runs the stages of
         /// <see cref="StepStage"/> in order; a stage with no work returns at once.
-        /// Allocates nothing once the world is warm.
+        /// Allocates nothing once the world is warm. <paramref name="dt"/> must be in
+        /// [<see cref="Limits.MinTimeStep"/>, <see cref="Limits.MaxTimeStep"/>] (1e-6 to 1 s).
         /// </summary>
         public void Step(float dt)
         {
-            if (!(dt > 0 && float.IsFinite(dt)))
-                throw new ArgumentException($"dt must be finite and > 0, got {dt}.", nameof(dt));
+            if (!(dt >= Limits.MinTimeStep && dt <= Limits.MaxTimeStep))
+                throw new ArgumentException($"dt must be between {Limits.MinTimeStep:G} and {Limits.MaxTimeStep:G} s (Limits.MinTimeStep/MaxTimeStep), got {dt}.", nameof(dt));
             ThrowIfInStep();
             _inStep = true;
             try

@@ -13,7 +13,22 @@ namespace Fulcrum
         internal readonly BodyStorage Bodies = new BodyStorage();
         internal readonly ShapeStorage Shapes = new ShapeStorage();
 
+        static int s_lastId;
+
         WorldSettings _settings;
+
+        /// <summary>
+        /// This world's id, unique in the process (from 1), carried by every handle it issues so
+        /// that a handle of another world is refused instead of reaching the object in the same
+        /// slot here. Not simulation state: saving and restoring a world does not carry it.
+        /// </summary>
+        public int Id { get; } = System.Threading.Interlocked.Increment(ref s_lastId);
+
+        // The one-line error for a handle issued by another world (or built with no world id).
+        internal StaleHandleException ForeignHandle(string handle, int worldId) =>
+            new StaleHandleException(worldId == 0
+                ? $"{handle} carries no world id: use handles returned by World {Id}'s own calls."
+                : $"{handle} belongs to World {worldId}, not to this World {Id}: handles cannot cross worlds.");
         bool _inStep;
         long _stepIndex;
         StepProfile _profile;

@@ -84,7 +84,14 @@ namespace Fulcrum
         public float LinearSlop;
         /// <summary>Relative normal speed below which restitution is ignored, m/s. Default: 1 m/s.</summary>
         public float RestitutionThreshold;
-        /// <summary>Speed cap for any body, m/s (keeps a blown-up scene finite). Default: 400 m/s.</summary>
+        /// <summary>
+        /// Speed cap for any point of a dynamic body, m/s (keeps a blown-up scene finite): each
+        /// velocity update clamps the centre's speed to it, and the angular speed to
+        /// MaxLinearSpeed / r (r: the farthest point of the body's shapes from its centre of
+        /// mass) and to <see cref="Limits.MaxAngularSpeed"/>, so spin cannot fling a point past
+        /// it either. A larger input velocity (up to <see cref="Limits.MaxInputSpeed"/>) is
+        /// clamped at the next step, never zeroed. At most Limits.MaxInputSpeed. Default: 400 m/s.
+        /// </summary>
         public float MaxLinearSpeed;
         /// <summary>
         /// Manifold reuse: a touching pair whose relative pose moved less than this distance (m)
@@ -131,13 +138,15 @@ namespace Fulcrum
         public readonly void Validate()
         {
             Mathematics.Validate.Finite(Gravity, "settings.Gravity");
+            if (Limits.Length(Gravity) > Limits.MaxGravity)
+                throw new ArgumentException($"settings.Gravity must have magnitude at most {Limits.MaxGravity:G} m/s^2 (Limits.MaxGravity), got {Gravity}.", nameof(Gravity));
             if (Solver != SolverType.Pgs && Solver != SolverType.Tgs)
                 throw new ArgumentException($"settings.Solver must be Pgs or Tgs, got {Solver}.", nameof(Solver));
-            if (Iterations < 1) throw new ArgumentException($"settings.Iterations must be >= 1, got {Iterations}.", nameof(Iterations));
-            if (Substeps < 1) throw new ArgumentException($"settings.Substeps must be >= 1, got {Substeps}.", nameof(Substeps));
-            if (PositionIterations < 0) throw new ArgumentException($"settings.PositionIterations must be >= 0, got {PositionIterations}.", nameof(PositionIterations));
-            if (RelaxIterations < 0) throw new ArgumentException($"settings.RelaxIterations must be >= 0, got {RelaxIterations}.", nameof(RelaxIterations));
-            if (Threads < 1) throw new ArgumentException($"settings.Threads must be >= 1, got {Threads}.", nameof(Threads));
+            if (Iterations < 1 || Iterations > Limits.MaxIterations) throw new ArgumentException($"settings.Iterations must be in 1..{Limits.MaxIterations} (Limits.MaxIterations), got {Iterations}.", nameof(Iterations));
+            if (Substeps < 1 || Substeps > Limits.MaxSubsteps) throw new ArgumentException($"settings.Substeps must be in 1..{Limits.MaxSubsteps} (Limits.MaxSubsteps), got {Substeps}.", nameof(Substeps));
+            if (PositionIterations < 0 || PositionIterations > Limits.MaxIterations) throw new ArgumentException($"settings.PositionIterations must be in 0..{Limits.MaxIterations} (Limits.MaxIterations), got {PositionIterations}.", nameof(PositionIterations));
+            if (RelaxIterations < 0 || RelaxIterations > Limits.MaxIterations) throw new ArgumentException($"settings.RelaxIterations must be in 0..{Limits.MaxIterations} (Limits.MaxIterations), got {RelaxIterations}.", nameof(RelaxIterations));
+            if (Threads < 1 || Threads > Limits.MaxThreads) throw new ArgumentException($"settings.Threads must be in 1..{Limits.MaxThreads} (Limits.MaxThreads), got {Threads}.", nameof(Threads));
             Mathematics.Validate.Positive(TimeToSleep, "settings.TimeToSleep");
             Mathematics.Validate.NonNegative(SleepLinearVelocity, "settings.SleepLinearVelocity");
             Mathematics.Validate.NonNegative(SleepAngularVelocity, "settings.SleepAngularVelocity");
@@ -149,6 +158,8 @@ namespace Fulcrum
             Mathematics.Validate.NonNegative(LinearSlop, "settings.LinearSlop");
             Mathematics.Validate.NonNegative(RestitutionThreshold, "settings.RestitutionThreshold");
             Mathematics.Validate.Positive(MaxLinearSpeed, "settings.MaxLinearSpeed");
+            if (MaxLinearSpeed > Limits.MaxInputSpeed)
+                throw new ArgumentException($"settings.MaxLinearSpeed must be at most {Limits.MaxInputSpeed:G} m/s (Limits.MaxInputSpeed), got {MaxLinearSpeed}.", nameof(MaxLinearSpeed));
             Mathematics.Validate.NonNegative(ManifoldReuseDistance, "settings.ManifoldReuseDistance");
             Mathematics.Validate.NonNegative(ManifoldReuseAngle, "settings.ManifoldReuseAngle");
             if (ManifoldReuseAngle > MathF.PI)

@@ -56,9 +56,18 @@ namespace Fulcrum.Scenes
                 def.AngularVelocity = b.AngularVelocity;
                 def.Mass = b.Mass ?? 0;
                 def.Ccd = b.Ccd;
-                BodyHandle h = world.CreateBody(def);
-                foreach (ShapeDef shape in shapes[i]) world.AddShape(h, shape);
-                handles.Add(h);
+                try
+                {
+                    BodyHandle h = world.CreateBody(def);
+                    foreach (ShapeDef shape in shapes[i]) world.AddShape(h, shape);
+                    handles.Add(h);
+                }
+                catch (System.ArgumentException error)
+                {
+                    // A limit only the built body shows (its mass from density and size, a
+                    // generated body beyond the world bounds): name the entry, never a stack trace.
+                    throw new SceneException(new SceneError(e.BodySources[i], SceneError.MessageOf(error)));
+                }
             }
             var instance = new SceneInstance(world, document, e, handles);
             for (int j = 0; j < e.Joints.Count; j++)
@@ -71,7 +80,7 @@ namespace Fulcrum.Scenes
                 catch (System.ArgumentException error)
                 {
                     // Limits the validator cannot see (a body jointed to itself, say): name the entry.
-                    throw new SceneException(new SceneError(e.JointSources[j], error.Message));
+                    throw new SceneException(new SceneError(e.JointSources[j], SceneError.MessageOf(error)));
                 }
             }
             return instance;

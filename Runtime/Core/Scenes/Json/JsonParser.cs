@@ -13,8 +13,20 @@ namespace Fulcrum.Scenes
     /// </summary>
     public sealed class JsonParser
     {
-        // Deep enough for any scene, shallow enough that hostile input cannot overflow the stack.
-        const int MaxDepth = 128;
+        /// <summary>Deepest nesting of arrays and objects: deep enough for any scene, shallow enough that hostile input cannot overflow the stack.</summary>
+        public const int MaxDepth = 128;
+
+        /// <summary>Most members in one object (the scene format has a few dozen fields; materials are the largest map).</summary>
+        public const int MaxMembers = 10000;
+
+        /// <summary>Longest member name, characters.</summary>
+        public const int MaxNameLength = 256;
+
+        /// <summary>Longest string value (names, file paths), characters.</summary>
+        public const int MaxStringLength = 4096;
+
+        /// <summary>Longest number, characters (a float needs at most about 15).</summary>
+        public const int MaxNumberLength = 64;
 
         readonly string _text;
         int _pos;
@@ -46,7 +58,7 @@ namespace Fulcrum.Scenes
             {
                 case '{': return ParseObject(path, depth, line, column);
                 case '[': return ParseArray(path, depth, line, column);
-                case '"': return JsonValue.Parsed(JsonKind.String, ParseString(path), false, null, null, path, line, column);
+                case '"': return JsonValue.Parsed(JsonKind.String, ParseString(path, MaxStringLength, "string"), false, null, null, path, line, column);
                 case 't': Expect("true", path); return JsonValue.Parsed(JsonKind.Bool, null, true, null, null, path, line, column);
                 case 'f': Expect("false", path); return JsonValue.Parsed(JsonKind.Bool, null, false, null, null, path, line, column);
                 case 'n': Expect("null", path); return JsonValue.Parsed(JsonKind.Null, null, false, null, null, path, line, column);
@@ -61,6 +73,7 @@ namespace Fulcrum.Scenes
         JsonValue ParseObject(string path, int depth, int line, int column)
         {
             var members = new List<KeyValuePair<string, JsonValue>>();
+            var names = new HashSet<string>(System.StringComparer.Ordinal); // linear duplicate check
             _pos++; // '{'
             SkipWhitespace();
             if (Peek() == '}')
@@ -73,10 +86,10 @@ namespace Fulcrum.Scenes
                 SkipWhitespace();
                 if (Peek() != '"') Fail(path, $"unexpected {Describe()}, expected a member name in double quotes");
                 int keyLine = _line, keyColumn = Column;
-                string key = ParseString(path);
+                string key = ParseString(path, MaxNameLength, "member name");
                 string memberPath = JsonPath.Member(path, key);
-                foreach (KeyValuePair<string, JsonValue> m in members)
-                    if (m.Key == key) FailAt(memberPath, $"duplicate member '{key}'", keyLine, keyColumn);
+                if (!names.Add(key)) FailAt(memberPath, $"duplicate member '{key}'", keyLine, keyColumn);
+                if (members.Count == MaxMembers) FailAt(memberPath, $"more than {MaxMembers} members in one object", keyLine, keyColumn);
                 SkipWhitespace();
                 if (Peek() != ':') Fail(memberPath, $"unexpected {Describe()}, expected ':'");
                 _pos++;
@@ -114,13 +127,14 @@ namespace Fulcrum.Scenes
             return JsonValue.Parsed(JsonKind.Array, null, false, items, null, path, line, column);
         }
 
-        string ParseString(string path)
+        string ParseString(string path, int maxLength, string what)
         {
             _pos++; // opening quote
             var sb = new StringBuilder();
             while (true)
             {
                 if (_pos >= _text.Length) Fail(path, "unterminated string");
+                if (sb.Length > maxLength) Fail(path, $"{what} longer than {maxLength} characters");
                 char c = _text[_pos];
                 if (c == '"') { _pos++; return sb.ToString(); }
                 if (c < 0x20) Fail(path, c == '\n' ? "unterminated string (a line break inside quotes)" : "control character inside a string");
@@ -178,6 +192,8 @@ namespace Fulcrum.Scenes
             }
             if (IsDigit(Peek()) || char.IsLetter(Peek()) || Peek() == '.')
                 Fail(path, $"unexpected {Describe()} in a number");
+            if (_pos - start > MaxNumberLength)
+                FailAt(path, $"number longer than {MaxNumberLength} characters ({SceneError.Clip(_text.Substring(start, SceneError.MaxEcho + 1))})", _line, start - _lineStart + 1);
             return _text.Substring(start, _pos - start);
         }
 

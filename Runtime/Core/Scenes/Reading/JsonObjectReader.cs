@@ -201,7 +201,7 @@ namespace Fulcrum.Scenes
             // Parsing the text straight to float rounds once (text -> double -> float could round twice).
             if (!float.TryParse(v.NumberText, NumberStyles.Float, CultureInfo.InvariantCulture, out f) || !float.IsFinite(f))
             {
-                d.Add(v.Path, $"{v.NumberText} is out of the range of a float", v);
+                d.Add(v.Path, $"{SceneError.Clip(v.NumberText)} is out of the range of a float", v);
                 return false;
             }
             return true;
@@ -217,7 +217,7 @@ namespace Fulcrum.Scenes
             }
             if (!int.TryParse(v.NumberText, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out i))
             {
-                d.Add(v.Path, $"expected an integer, got {v.NumberText}", v);
+                d.Add(v.Path, $"expected an integer, got {SceneError.Clip(v.NumberText)}", v);
                 return false;
             }
             return true;
@@ -248,8 +248,8 @@ namespace Fulcrum.Scenes
         public static string Describe(JsonValue v) => v.Kind switch
         {
             JsonKind.Array => $"an array of {v.Items.Count}",
-            JsonKind.Number => v.NumberText,
-            JsonKind.String => JsonPath.Quote(v.AsString),
+            JsonKind.Number => SceneError.Clip(v.NumberText),
+            JsonKind.String => JsonPath.Quote(SceneError.Clip(v.AsString)),
             JsonKind.Bool => v.AsBool ? "true" : "false",
             _ => v.KindName,
         };

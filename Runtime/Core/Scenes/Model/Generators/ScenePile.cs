@@ -29,7 +29,16 @@ namespace Fulcrum.Scenes
         public SceneShapeType Shape { get; set; } = SceneShapeType.Box;
 
         /// <inheritdoc/>
-        public override long BodyCount => Grid.Length == 3 ? (long)Grid[0] * Grid[1] * Grid[2] : 0;
+        public override long BodyCount
+        {
+            get
+            {
+                if (Grid == null || Grid.Length != 3 || Grid[0] <= 0 || Grid[1] <= 0 || Grid[2] <= 0) return 0;
+                // Three counts of up to 2^31 overflow a long: saturate instead (checked arithmetic).
+                try { return checked((long)Grid[0] * Grid[1] * Grid[2]); }
+                catch (System.OverflowException) { return long.MaxValue; }
+            }
+        }
 
         /// <summary>The shape of each body, fitted to a cell of <see cref="SceneGenerator.Size"/>.</summary>
         public SceneShape CellShape()

@@ -26,7 +26,7 @@ namespace Fulcrum.Scenes
         public SceneAxis Axis { get; set; }
 
         /// <inheritdoc/>
-        public override long BodyCount => (long)Count * (Count + 1) / 2;
+        public override long BodyCount => Count <= 0 ? 0 : (long)Count * ((long)Count + 1) / 2; // in long: Count + 1 overflows int at 2^31 - 1
 
         /// <inheritdoc/>
         public override void Expand(List<SceneBody> bodies, List<SceneJoint> joints)

@@ -38,9 +38,10 @@ namespace Fulcrum.Scenes
         {
             get
             {
-                long n = 0;
-                for (int row = 0; row < Rows; row++) n += RowCount(row);
-                return n;
+                if (Rows <= 0 || Count <= 0) return 0;
+                // Closed form (a loop over 2^31 rows takes seconds): odd rows of a staggered wall hold one brick less.
+                long n = (long)Rows * Count;
+                return Staggered ? n - Rows / 2 : n;
             }
         }
 
