@@ -15,11 +15,12 @@ namespace Fulcrum.Tests.Solver
     {
         const float Dt = 1f / 60f;
 
-        // Measured with the defaults (TGS 4x4, 60 Hz contacts, block solver): top drift 0.00 /
-        // 0.02 / 0.53 mm and sag 6.9 / 27.6 / 110 mm for 10 / 20 / 40 boxes.
+        // Measured with the defaults (TGS 4x4, 60 Hz contacts, block solver, shock propagation
+        // at 2 mm): top drift 0.00 mm and sag 6.9 / 26.6 / 74.4 mm for 10 / 20 / 40 boxes
+        // (27.6 / 110 mm without the sweep).
         [TestCase(10, 0.002f, 0.012f)]
         [TestCase(20, 0.002f, 0.04f)]
-        [TestCase(40, 0.005f, 0.15f)]
+        [TestCase(40, 0.005f, 0.09f)]
         public void Tower_of_cubes_stands_with_default_settings(int count, float maxDrift, float maxSag)
         {
             var w = new World();

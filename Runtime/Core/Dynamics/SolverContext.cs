@@ -52,6 +52,7 @@ namespace Fulcrum.Dynamics
         JointSolver.StepParameters _jointParameters;
         readonly ColorJob _colorJob;
         readonly BodyJob _bodyJob;
+        readonly ShockPropagation _shock = new ShockPropagation();
 
         // Contacts of each colour not taken by the wide path, by index into Contacts.
         int[] _scalarContacts = new int[16];
@@ -156,6 +157,7 @@ namespace Fulcrum.Dynamics
             if (Points.Length < 4 * manifolds) Points = new ContactConstraintPoint[4 * manifolds];
             if (JointOrder.Length < joints) JointOrder = new int[joints];
             if (_scalarContacts.Length < manifolds) _scalarContacts = new int[manifolds];
+            _shock.Reserve(b, manifolds);
 #if NET
             if (_rejected.Length < manifolds) _rejected = new int[manifolds];
             // Each colour's last group may be padded: at most one group per colour more.
@@ -512,6 +514,18 @@ namespace Fulcrum.Dynamics
         /// angular velocity, is what carries over between constraint impulses (the gyroscopic
         /// terms).
         /// </summary>
+        /// <summary>Levels the step's bodies and collects the contacts between levels for <see cref="Shock"/>.</summary>
+        public void PrepareShock(IslandBuilder islands) =>
+            _shock.Build(Bodies, BodyCount, _manifolds, islands.Manifolds, islands.ManifoldCount, _indexOfSlot, _settings.LinearSlop, _settings.ShockDepth);
+
+        /// <summary>The shock-propagation sweep of the substep (see <see cref="ShockPropagation"/>).</summary>
+        public void Shock()
+        {
+            Vector3 g = _settings.Gravity;
+            float length = g.Length();
+            _shock.Sweep(Bodies, _settings.ShockDepth, length > 0 ? -g / length : Vector3.Zero);
+        }
+
         public void IntegratePositions()
         {
             _bodyJob.Positions = true;

@@ -20,12 +20,14 @@ namespace Fulcrum.Dynamics
         {
             ref readonly WorldSettings s = ref context.Settings;
             context.Prepare(islands, wide: true);
+            if (s.ShockPropagation) context.PrepareShock(islands);
             for (int sub = 0; sub < s.Substeps; sub++)
             {
                 context.IntegrateVelocities();
                 if (context.HasRestitution) context.RefreshApproach();
                 context.WarmStart();
                 for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true);
+                if (s.ShockPropagation) context.Shock();
                 context.IntegratePositions();
                 for (int i = 0; i < s.RelaxIterations; i++) context.Solve(useBias: false);
                 // Restitution for the impacts of this substep. The points of a face contact

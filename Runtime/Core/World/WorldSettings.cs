@@ -72,6 +72,21 @@ namespace Fulcrum
         /// <summary>Damping ratio of the soft contact constraint (1 = critical). Default: 10.</summary>
         public float ContactDampingRatio;
         /// <summary>
+        /// Shock propagation (TGS): after the biased passes of each substep, one sweep from the
+        /// ground up removes each body's approach to the body it rests on, that body held still
+        /// (ShockPropagation; Documentation~/MassRatio.md). It carries the ground's support up a
+        /// stack whatever the mass ratio; it only removes approach, so it never adds energy.
+        /// Default: true.
+        /// </summary>
+        public bool ShockPropagation;
+        /// <summary>
+        /// The depth, m, past which <see cref="ShockPropagation"/> stops a contact sinking: shallower
+        /// contacts rest on the soft solver alone (a box on a box rests 0.14 mm deep at 60 Hz), so
+        /// the sweep changes nothing in ordinary stacks and holds heavy loads here (at 1 mm a 40-row
+        /// pyramid's top drifts 21 mm instead of 12 mm as the sweep starts acting inside it). Default: 2 mm.
+        /// </summary>
+        public float ShockDepth;
+        /// <summary>
         /// Stiffness of joint rows (TGS), Hz; clamped to a quarter of the substep rate, where the
         /// soft step stays stable. Default: 60 Hz.
         /// </summary>
@@ -124,6 +139,8 @@ namespace Fulcrum
             Deterministic = true,
             ContactHertz = 1000f,
             ContactDampingRatio = 10f,
+            ShockPropagation = true,
+            ShockDepth = 0.002f,
             JointHertz = 60f,
             JointDampingRatio = 5f,
             MaxContactPushSpeed = 3f,
@@ -152,6 +169,7 @@ namespace Fulcrum
             Mathematics.Validate.NonNegative(SleepAngularVelocity, "settings.SleepAngularVelocity");
             Mathematics.Validate.Positive(ContactHertz, "settings.ContactHertz");
             Mathematics.Validate.NonNegative(ContactDampingRatio, "settings.ContactDampingRatio");
+            Mathematics.Validate.NonNegative(ShockDepth, "settings.ShockDepth");
             Mathematics.Validate.Positive(JointHertz, "settings.JointHertz");
             Mathematics.Validate.NonNegative(JointDampingRatio, "settings.JointDampingRatio");
             Mathematics.Validate.Positive(MaxContactPushSpeed, "settings.MaxContactPushSpeed");
