@@ -516,7 +516,7 @@ namespace Fulcrum.Dynamics
         /// </summary>
         /// <summary>Levels the step's bodies and collects the contacts between levels for <see cref="Shock"/>.</summary>
         public void PrepareShock(IslandBuilder islands) =>
-            _shock.Build(Bodies, BodyCount, _manifolds, islands.Manifolds, islands.ManifoldCount, _indexOfSlot, _settings.LinearSlop, _settings.ShockDepth);
+            _shock.Build(Bodies, BodyCount, _manifolds, islands.Manifolds, islands.ManifoldCount, _indexOfSlot, _settings.LinearSlop, _settings.ShockDepth, _dt);
 
         /// <summary>The shock-propagation sweep of the substep (see <see cref="ShockPropagation"/>).</summary>
         public void Shock()

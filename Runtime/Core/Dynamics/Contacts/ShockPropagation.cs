@@ -72,15 +72,16 @@ namespace Fulcrum.Dynamics
         /// <paramref name="touching"/>: a point closer than this (m) makes its pair touch.
         /// </summary>
         public void Build(SolverBody[] bodies, int bodyCount, ContactManifold[] manifolds, int[] manifoldList, int manifoldCount,
-            int[] indexOfSlot, float touching, float depth)
+            int[] indexOfSlot, float touching, float depth, float dt)
         {
             _count = 0;
-            // Only a contact already half way to the depth at the start of the step can pass it
-            // within the step at a resting load; a step with none (every ordinary stack) pays
-            // this one pass over the points and nothing else.
+            // Only a contact that is half way to the depth already, or that would get there
+            // within the step at its present approach, can pass it: a step with none (every
+            // ordinary stack at rest) pays this one pass over the points and nothing else.
             float candidate = -0.5f * depth;
             bool any = false;
-            for (int k = 0; k < manifoldCount && !any; k++) any = Deeper(ref manifolds[manifoldList[k]], candidate);
+            for (int k = 0; k < manifoldCount && !any; k++)
+                any = Candidate(ref manifolds[manifoldList[k]], bodies, indexOfSlot, candidate, dt);
             if (!any) return;
             if (_level.Length < bodyCount) _level = new int[2 * bodyCount];
             if (_degree.Length < bodyCount + 1) _degree = new int[2 * bodyCount + 1];
@@ -138,7 +139,9 @@ namespace Fulcrum.Dynamics
             for (int k = 0; k < manifoldCount; k++)
             {
                 ref ContactManifold m = ref manifolds[manifoldList[k]];
-                if (!Deeper(ref m, candidate)) continue;
+                // Every touching contact: a contact resting now may be pressed past the depth
+                // within the step by a body landing on the one above it.
+                if (!Touches(ref m, touching)) continue;
                 int a = IndexOf(indexOfSlot, m.BodyA), b = IndexOf(indexOfSlot, m.BodyB);
                 int la = _level[a], lb = _level[b];
                 if (la == lb || la == Unreached || lb == Unreached) continue;
@@ -178,6 +181,14 @@ namespace Fulcrum.Dynamics
         static int IndexOf(int[] indexOfSlot, int slot) => slot < 0 ? 0 : indexOfSlot[slot];
 
         static bool Touches(ref ContactManifold m, float touching) => Deeper(ref m, touching);
+
+        // Deeper than the candidate depth now, or at the end of the step at the centres'
+        // present approach speed along the normal.
+        static bool Candidate(ref ContactManifold m, SolverBody[] bodies, int[] indexOfSlot, float candidate, float dt)
+        {
+            float approach = Vector3.Dot(m.Normal, bodies[IndexOf(indexOfSlot, m.BodyB)].LinearVelocity - bodies[IndexOf(indexOfSlot, m.BodyA)].LinearVelocity);
+            return Deeper(ref m, candidate - MathF.Min(approach, 0f) * dt);
+        }
 
         static bool Deeper(ref ContactManifold m, float separation)
         {
