@@ -24,11 +24,37 @@ namespace Fulcrum.Dynamics
         /// <summary>Fraction of the accumulated impulse that leaks each iteration, in [0, 1).</summary>
         public readonly float ImpulseScale;
 
+        /// <summary>
+        /// The largest bias velocity the row asks for, m/s or rad/s (joints: a wildly violated
+        /// joint is pulled together at this speed at most, not at biasRate times its error).
+        /// </summary>
+        public readonly float MaxBias;
+
         public Softness(float biasRate, float massScale, float impulseScale)
+            : this(biasRate, massScale, impulseScale, float.PositiveInfinity)
+        {
+        }
+
+        Softness(float biasRate, float massScale, float impulseScale, float maxBias)
         {
             BiasRate = biasRate;
             MassScale = massScale;
             ImpulseScale = impulseScale;
+            MaxBias = maxBias;
+        }
+
+        /// <summary>This softness with its bias velocity capped at <paramref name="maxBias"/>.</summary>
+        public Softness WithMaxBias(float maxBias) => new Softness(BiasRate, MassScale, ImpulseScale, maxBias);
+
+        /// <summary>The bias velocity for the error <paramref name="c"/>: biasRate c, capped at <see cref="MaxBias"/>.</summary>
+        public float Bias(float c) => Math.Clamp(BiasRate * c, -MaxBias, MaxBias);
+
+        /// <summary>The bias velocity for the error vector <paramref name="c"/>, its length capped at <see cref="MaxBias"/>.</summary>
+        public System.Numerics.Vector3 Bias(System.Numerics.Vector3 c)
+        {
+            System.Numerics.Vector3 v = BiasRate * c;
+            float length = v.Length();
+            return length > MaxBias ? v * (MaxBias / length) : v;
         }
 
         /// <summary>A rigid row without position feedback.</summary>

@@ -236,7 +236,7 @@ namespace Fulcrum.Dynamics
 
             _jointParameters = new JointSolver.StepParameters
             {
-                Joint = Softness.Make(MathF.Min(set.JointHertz, Softness.MaxStableHertz(_h)), set.JointDampingRatio, _h),
+                Joint = Softness.Make(MathF.Min(set.JointHertz, Softness.MaxStableHertz(_h)), set.JointDampingRatio, _h).WithMaxBias(set.MaxJointCorrectionSpeed),
                 H = _h,
                 InvH = _invH,
                 // Joints are projected fully in each position pass (Box2D v2.x); a fraction, as

@@ -93,6 +93,14 @@ namespace Fulcrum
         public float JointHertz;
         /// <summary>Damping ratio of joint rows (TGS). Default: 5.</summary>
         public float JointDampingRatio;
+        /// <summary>
+        /// The fastest a joint's soft rows (TGS) pull a violated joint back together: m/s for
+        /// anchors and slides, rad/s for angles and limits. A joint created far from its target
+        /// (bodies overlapping, axes misaligned, a hinge outside its limits) converges at this
+        /// speed instead of being kicked at the bias rate times its error (a hinge 160 degrees
+        /// outside its limits was spun at 90 rad/s in the first step and blew up). Default: 4.
+        /// </summary>
+        public float MaxJointCorrectionSpeed;
         /// <summary>The fastest the solver may push overlapping bodies apart, m/s. Default: 3 m/s.</summary>
         public float MaxContactPushSpeed;
         /// <summary>Penetration allowed without correction, m. Default: 0.005 m.</summary>
@@ -143,6 +151,7 @@ namespace Fulcrum
             ShockDepth = 0.002f,
             JointHertz = 60f,
             JointDampingRatio = 5f,
+            MaxJointCorrectionSpeed = 4f,
             MaxContactPushSpeed = 3f,
             LinearSlop = 0.005f,
             RestitutionThreshold = 1f,
@@ -172,6 +181,7 @@ namespace Fulcrum
             Mathematics.Validate.NonNegative(ShockDepth, "settings.ShockDepth");
             Mathematics.Validate.Positive(JointHertz, "settings.JointHertz");
             Mathematics.Validate.NonNegative(JointDampingRatio, "settings.JointDampingRatio");
+            Mathematics.Validate.Positive(MaxJointCorrectionSpeed, "settings.MaxJointCorrectionSpeed");
             Mathematics.Validate.Positive(MaxContactPushSpeed, "settings.MaxContactPushSpeed");
             Mathematics.Validate.NonNegative(LinearSlop, "settings.LinearSlop");
             Mathematics.Validate.NonNegative(RestitutionThreshold, "settings.RestitutionThreshold");

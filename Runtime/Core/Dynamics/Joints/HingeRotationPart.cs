@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 
 namespace Fulcrum.Dynamics
@@ -16,17 +17,32 @@ namespace Fulcrum.Dynamics
         /// <summary>Accumulated impulses along u1 and u2, N m s.</summary>
         public float Impulse1, Impulse2;
 
+        const float IllConditioned = 1e-3f;
+
         /// <summary>Builds K^-1 for the rows <paramref name="u1"/>, <paramref name="u2"/>.</summary>
         public void ComputeMass(in SolverBody a, in SolverBody b, Vector3 u1, Vector3 u2)
         {
             Vector3 iu1 = a.InverseInertia * u1 + b.InverseInertia * u1;
             Vector3 iu2 = a.InverseInertia * u2 + b.InverseInertia * u2;
             float k11 = Vector3.Dot(u1, iu1), k12 = Vector3.Dot(u1, iu2), k22 = Vector3.Dot(u2, iu2);
-            float det = k11 * k22 - k12 * k12;
-            if (!(det > 1e-30f * (k11 * k22)) || !(k11 > 0))
+            float scale = k11 + k22;
+            if (!(scale > 0) || !float.IsFinite(scale))
             {
                 M11 = M12 = M22 = 0;
                 return;
+            }
+            // Near a 90 degree misalignment (a1 along b2 or c2) one row's direction shrinks to
+            // nothing while its error is largest: its plain inverse mass 1/k grows as 1/|u|^2
+            // and one step spun the bodies at 1e5-1e6 rad/s. Below a condition of 1e3 the matrix
+            // is regularised (K + delta I, delta = 1e-3 trace), which bounds the impulse the
+            // vanishing row can ask for; a well-aligned hinge (|u1| = |u2| = 1) is untouched.
+            float det = k11 * k22 - k12 * k12;
+            if (!(det > IllConditioned * k11 * k22) || k11 < IllConditioned * scale || k22 < IllConditioned * scale)
+            {
+                float delta = IllConditioned * scale;
+                k11 += delta;
+                k22 += delta;
+                det = k11 * k22 - k12 * k12;
             }
             float inv = 1f / det;
             M11 = k22 * inv;
@@ -51,8 +67,16 @@ namespace Fulcrum.Dynamics
             float ms = 1, isc = 0;
             if (useBias)
             {
-                v1 += soft.BiasRate * c1;
-                v2 += soft.BiasRate * c2;
+                // The two errors' bias as one vector, so its cap keeps its direction.
+                float b1 = soft.BiasRate * c1, b2 = soft.BiasRate * c2;
+                float length = MathF.Sqrt(b1 * b1 + b2 * b2);
+                if (length > soft.MaxBias)
+                {
+                    b1 *= soft.MaxBias / length;
+                    b2 *= soft.MaxBias / length;
+                }
+                v1 += b1;
+                v2 += b2;
                 ms = soft.MassScale;
                 isc = soft.ImpulseScale;
             }

@@ -462,7 +462,7 @@ namespace Fulcrum.Dynamics
 
         /// <summary>A spring toward C = 0: a soft row with the joint's own frequency and damping.</summary>
         static void SolveSpring(ref AxisConstraintPart row, ref SolverBody a, ref SolverBody b, float C, in Softness soft) =>
-            row.Solve(ref a, ref b, soft.BiasRate * C, soft.MassScale, soft.ImpulseScale, float.NegativeInfinity, float.PositiveInfinity);
+            row.Solve(ref a, ref b, soft.Bias(C), soft.MassScale, soft.ImpulseScale, float.NegativeInfinity, float.PositiveInfinity);
 
         /// <summary>
         /// The rotation of frame B relative to frame A about A's x axis, in (-pi, pi]: the twist

@@ -38,7 +38,7 @@ namespace Fulcrum.Dynamics
         {
             Vector3 jv = b.AngularVelocity - a.AngularVelocity;
             Vector3 impulse;
-            if (useBias) impulse = -soft.MassScale * (EffectiveMass * (jv + soft.BiasRate * C)) - soft.ImpulseScale * Impulse;
+            if (useBias) impulse = -soft.MassScale * (EffectiveMass * (jv + soft.Bias(C))) - soft.ImpulseScale * Impulse;
             else impulse = -(EffectiveMass * jv);
             Impulse += impulse;
             Apply(ref a, ref b, impulse);
