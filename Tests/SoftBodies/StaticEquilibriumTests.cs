@@ -86,6 +86,35 @@ namespace Fulcrum.Tests.SoftBodies
         }
 
         [Test]
+        public void RefinedBarApproachesBeamTheory()
+        {
+            // Same bar, E = 1e7 Pa (small deflection), nu = 0: the sag of linear tets rises towards
+            // Euler-Bernoulli qL^4/8EI as the cross-section is refined (one cell across locks).
+            var material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e7f, 0f, 1000f);
+            double beam = 1000 * 9.81 * 0.01 / (8 * 1e7 * Math.Pow(0.1, 4) / 12);
+            double coarse = BarSag(material, 10, 1), fine = BarSag(material, 20, 2);
+            TestContext.Out.WriteLine($"bar E 1e7: sag 10x1x1 {coarse * 1e3:F3} mm, 20x2x2 {fine * 1e3:F3} mm, Euler-Bernoulli {beam * 1e3:F3} mm");
+            Assert.That(fine, Is.GreaterThan(coarse));
+            Assert.That(Math.Abs(fine - beam), Is.LessThan(Math.Abs(coarse - beam)));
+            Assert.That(fine, Is.LessThan(1.1 * beam));
+        }
+
+        static double BarSag(in NeoHookeanMaterial material, int cellsLong, int cellsAcross)
+        {
+            SoftMesh mesh = SoftMesh.Box(new Vector3(1f, 0.1f, 0.1f), cellsLong, cellsAcross, cellsAcross);
+            var eq = new StaticEquilibrium(mesh, material);
+            ReadOnlySpan<Vector3> v = mesh.Vertices;
+            for (int i = 0; i < v.Length; i++) if (v[i].X < -0.499f) eq.Pin(i);
+            eq.AddGravity(new Vector3(0, -9.81f, 0));
+            Assert.That(eq.Solve(30, 1e-6), Is.True, $"residual {eq.Residual} N after {eq.Iterations} iterations");
+            double sag = 0;
+            int tip = 0;
+            for (int i = 0; i < v.Length; i++)
+                if (v[i].X > 0.499f) { sag += v[i].Y - eq.Position(i).Y; tip++; }
+            return sag / tip;
+        }
+
+        [Test]
         public void StiffBarSagIsBelowAMillimetre()
         {
             // stiff-bar.json's body: 1 x 0.1 x 0.1 m, 10 x 1 x 1 cells, E = 1e9 Pa, clamped at x = -0.5.
