@@ -34,6 +34,8 @@ namespace Fulcrum.Tests.SoftScenes
             float q = Density * 9.81f * Side * Side, inertia = Side * Side * Side * Side / 12f;
             float beamSag = q * Length * Length * Length * Length / (8f * E * inertia);
             TestContext.Out.WriteLine($"stiff-bar: mean tip sag over the last 2 s {meanSag:F4} m (largest {restTip - lowestTip:F4} m) vs Euler-Bernoulli {beamSag:E2} m ({meanSag / beamSag:F0}x softer)");
+            double reference = ReferenceSag(run.Body);
+            TestContext.Out.WriteLine($"stiff-bar: converged sag on this mesh (Newton static equilibrium) {reference * 1e3:F3} mm; XPBD sags {meanSag / reference:F0}x that");
             TestContext.Out.WriteLine($"stiff-bar: max strain+kinetic energy first 2 s {firstHalfMax:F0} J, last 2 s {secondHalfMax:F0} J; min J {minJ:F3}");
 
             Assert.That(run.AllFinite(), Is.True);
@@ -41,6 +43,22 @@ namespace Fulcrum.Tests.SoftScenes
             Assert.That(restTip - lowestTip, Is.LessThan(Length), "the tip cannot hang further than the bar is long");
             Assert.That(meanSag, Is.GreaterThan(0f));
             Assert.That(minJ, Is.GreaterThan(0f));
+            Assert.That(reference, Is.GreaterThan(0.0).And.LessThan(beamSag), "the converged linear-tet bar is stiffer than the beam (locking)");
+        }
+
+        /// <summary>Mean tip-face sag of the body's own mesh at static equilibrium, its pinned vertices held.</summary>
+        static double ReferenceSag(SoftBody body)
+        {
+            var eq = new StaticEquilibrium(body.Mesh, body.Material);
+            ReadOnlySpan<System.Numerics.Vector3> rest = body.Mesh.Vertices;
+            for (int i = 0; i < rest.Length; i++) if (body.InverseMasses[i] == 0f) eq.Pin(i);
+            eq.AddGravity(new System.Numerics.Vector3(0f, -9.81f, 0f));
+            Assert.That(eq.Solve(), Is.True, $"reference residual {eq.Residual} N");
+            double sag = 0;
+            int tip = 0;
+            for (int i = 0; i < rest.Length; i++)
+                if (rest[i].X > 0.5f * Length - 1e-4f) { sag += rest[i].Y - eq.Position(i).Y; tip++; }
+            return sag / tip;
         }
     }
 }
