@@ -70,7 +70,7 @@ namespace Fulcrum.SoftBodies
             SoftMesh mesh = MeshOf(sceneMesh, directory);
             // Generated meshes are centred on their origin; a file's mesh is moved so that the
             // scene's position, pins and probes are about its centre, as for every other kind.
-            Vector3 centre = sceneMesh is SceneSoftTetGen || sceneMesh is SceneSoftObj ? mesh.Center : Vector3.Zero;
+            Vector3 centre = sceneMesh is SceneSoftTetGen || sceneMesh is SceneSoftObj || sceneMesh is SceneSoftSurface ? mesh.Center : Vector3.Zero;
             Quaternion rotation = Quaternion.Normalize(s.Rotation);
             SoftBodyDef def = SoftBodyDef.Of(mesh, material, s.Position - Vector3.Transform(centre, rotation));
             def.Name = s.Name;
@@ -137,6 +137,9 @@ namespace Fulcrum.SoftBodies
                 case SceneSoftCloth cloth: return SoftMesh.Cloth(cloth.Size.X, cloth.Size.Y, cloth.Cells[0], cloth.Cells[1]);
                 case SceneSoftTetGen tetgen:
                     return SoftMesh.FromTetGen(ReadText(directory, tetgen.Node, "mesh.node"), ReadText(directory, tetgen.Ele, "mesh.ele"));
+                case SceneSoftSurface surface:
+                    ObjReader.Read(ReadText(directory, surface.File, "mesh.file"), out Vector3[] sv, out int[] st);
+                    return SurfaceTetrahedralizer.Tetrahedralize(sv, st, surface.Resolution);
                 case SceneSoftObj obj: return SoftMesh.FromObj(ReadText(directory, obj.File, "mesh.file"));
                 default: throw new ArgumentException($"mesh type {mesh.Type} is not supported.", "mesh.type");
             }
