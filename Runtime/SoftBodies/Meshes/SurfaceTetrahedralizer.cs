@@ -18,22 +18,23 @@ namespace Fulcrum.SoftBodies
         /// <summary>
         /// Tetrahedralises the closed surface (<paramref name="vertices"/>, three indices per
         /// triangle, any winding) with <paramref name="resolution"/> cells along its longest side.
-        /// Cost is O(grid vertices x triangles): meant for load time, not per step.
+        /// Cost is O(grid vertices x triangles): meant for load time, not per step. Errors name the
+        /// scene fields they come from (mesh.resolution, mesh.file).
         /// </summary>
         public static SoftMesh Tetrahedralize(Vector3[] vertices, int[] triangles, int resolution)
         {
             if (vertices == null) throw new ArgumentNullException(nameof(vertices));
             if (triangles == null) throw new ArgumentNullException(nameof(triangles));
             if (resolution < 2 || resolution > 256)
-                throw new ArgumentOutOfRangeException(nameof(resolution), $"mesh.resolution must be in [2, 256], got {resolution}.");
+                throw new ArgumentOutOfRangeException("mesh.resolution", $"mesh.resolution must be in [2, 256], got {resolution}.");
             if (triangles.Length == 0 || triangles.Length % 3 != 0)
-                throw new ArgumentException($"triangle index count must be a positive multiple of 3, got {triangles.Length}.", nameof(triangles));
+                throw new ArgumentException($"triangle index count must be a positive multiple of 3, got {triangles.Length}.", "mesh.file");
             for (int i = 0; i < vertices.Length; i++)
                 if (!float.IsFinite(vertices[i].X) || !float.IsFinite(vertices[i].Y) || !float.IsFinite(vertices[i].Z))
-                    throw new ArgumentException($"vertex {i} is not finite.", nameof(vertices));
+                    throw new ArgumentException($"vertex {i} is not finite.", "mesh.file");
             for (int i = 0; i < triangles.Length; i++)
                 if ((uint)triangles[i] >= (uint)vertices.Length)
-                    throw new ArgumentException($"triangle {i / 3} index {triangles[i]} is out of range [0, {vertices.Length}).", nameof(triangles));
+                    throw new ArgumentException($"triangle {i / 3} index {triangles[i]} is out of range [0, {vertices.Length}).", "mesh.file");
 
             Vector3 min = new Vector3(float.MaxValue), max = new Vector3(float.MinValue);
             foreach (Vector3 v in vertices)
@@ -43,7 +44,7 @@ namespace Fulcrum.SoftBodies
             }
             Vector3 extent = max - min;
             float longest = MathF.Max(extent.X, MathF.Max(extent.Y, extent.Z));
-            if (!(longest > 0)) throw new ArgumentException("the surface has no extent.", nameof(vertices));
+            if (!(longest > 0)) throw new ArgumentException("the surface has no extent.", "mesh.file");
             float cell = longest / resolution;
             // One spare cell per axis so the grid covers the surface with room on every side.
             int nx = (int)MathF.Ceiling(extent.X / cell) + 1, ny = (int)MathF.Ceiling(extent.Y / cell) + 1, nz = (int)MathF.Ceiling(extent.Z / cell) + 1;
@@ -59,7 +60,7 @@ namespace Fulcrum.SoftBodies
                 p => ClosestPoint(vertices, triangles, p + centre) - centre,
                 out Vector3[] tv, out int[] tt);
             if (tt.Length == 0)
-                throw new ArgumentException($"no cell of the grid lies inside the surface at resolution {resolution}: is it closed, or is the resolution too coarse?", nameof(resolution));
+                throw new ArgumentException($"no cell of the grid lies inside the surface at resolution {resolution}: is it closed, or is the resolution too coarse?", "mesh.resolution");
             for (int i = 0; i < tv.Length; i++) tv[i] += centre;
             return SoftMesh.FromTetrahedra(tv, tt);
         }
