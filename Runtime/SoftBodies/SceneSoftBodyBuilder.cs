@@ -70,7 +70,7 @@ namespace Fulcrum.SoftBodies
             SoftMesh mesh = MeshOf(sceneMesh, directory);
             // Generated meshes are centred on their origin; a file's mesh is moved so that the
             // scene's position, pins and probes are about its centre, as for every other kind.
-            Vector3 centre = sceneMesh is SceneSoftTetGen || sceneMesh is SceneSoftObj ? mesh.Center : Vector3.Zero;
+            Vector3 centre = sceneMesh is SceneSoftTetGen || sceneMesh is SceneSoftObj || sceneMesh is SceneSoftSurface ? mesh.Center : Vector3.Zero;
             Quaternion rotation = Quaternion.Normalize(s.Rotation);
             SoftBodyDef def = SoftBodyDef.Of(mesh, material, s.Position - Vector3.Transform(centre, rotation));
             def.Name = s.Name;
@@ -144,6 +144,19 @@ namespace Fulcrum.SoftBodies
                         // Name the file the reader's line number refers to.
                         bool inEle = e.Message.StartsWith("tetgen .ele", StringComparison.Ordinal);
                         throw new ArgumentException($"'{Scenes.SceneError.Clip(inEle ? tetgen.Ele : tetgen.Node, 200)}': {SceneError.MessageOf(e)}", inEle ? "mesh.ele" : "mesh.node", e);
+                    }
+                }
+                case SceneSoftSurface surface:
+                {
+                    string text = ReadText(directory, surface.File, "mesh.file");
+                    try
+                    {
+                        ObjReader.Read(text, out Vector3[] sv, out int[] st);
+                        return SurfaceTetrahedralizer.Tetrahedralize(sv, st, surface.Resolution);
+                    }
+                    catch (ArgumentException e) when (e.ParamName != "mesh.resolution")
+                    {
+                        throw new ArgumentException($"'{Scenes.SceneError.Clip(surface.File, 200)}': {SceneError.MessageOf(e)}", "mesh.file", e);
                     }
                 }
                 case SceneSoftObj obj:

@@ -52,7 +52,7 @@ namespace Fulcrum.Scenes
         /// <summary>"stable-neo-hookean" or "neo-hookean".</summary>
         public static string Of(SceneSoftModel m) => m == SceneSoftModel.StableNeoHookean ? "stable-neo-hookean" : "neo-hookean";
 
-        /// <summary>"box", "sphere", "capsule", "beam", "cloth", "tetgen" or "obj".</summary>
+        /// <summary>"box", "sphere", "capsule", "beam", "cloth", "tetgen", "obj" or "surface".</summary>
         public static string Of(SceneSoftMeshType t) => t switch
         {
             SceneSoftMeshType.Box => "box",
@@ -61,6 +61,7 @@ namespace Fulcrum.Scenes
             SceneSoftMeshType.Beam => "beam",
             SceneSoftMeshType.Cloth => "cloth",
             SceneSoftMeshType.TetGen => "tetgen",
+            SceneSoftMeshType.Surface => "surface",
             _ => "obj",
         };
 
@@ -140,7 +141,7 @@ namespace Fulcrum.Scenes
         /// <summary>Parses a soft mesh type; false for an unknown spelling.</summary>
         public static bool TryParse(string s, out SceneSoftMeshType t)
         {
-            for (t = SceneSoftMeshType.Box; t <= SceneSoftMeshType.Obj; t++)
+            for (t = SceneSoftMeshType.Box; t <= SceneSoftMeshType.Surface; t++)
                 if (Of(t) == s) return true;
             t = SceneSoftMeshType.Box;
             return false;

@@ -448,6 +448,11 @@ namespace Fulcrum.Scenes
                         FilePath(tetgen.Node, P(path, "node"));
                         FilePath(tetgen.Ele, P(path, "ele"));
                         break;
+                    case SceneSoftSurface surface:
+                        FilePath(surface.File, P(path, "file"));
+                        if (surface.Resolution < SceneSoftSurface.MinResolution || surface.Resolution > SceneSoftSurface.MaxResolution)
+                            Error(P(path, "resolution"), $"must be in [{SceneSoftSurface.MinResolution}, {SceneSoftSurface.MaxResolution}], got {surface.Resolution}");
+                        break;
                     case SceneSoftObj obj:
                         FilePath(obj.File, P(path, "file"));
                         Positive(obj.Thickness, P(path, "thickness"));

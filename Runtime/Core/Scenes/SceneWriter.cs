@@ -194,6 +194,7 @@ namespace Fulcrum.Scenes
                         .Add("cells", Ints(cloth.Cells)).Add("thickness", cloth.Thickness).Add("bendingScale", cloth.BendingScale);
                     break;
                 case SceneSoftTetGen tetgen: o.Add("node", tetgen.Node).Add("ele", tetgen.Ele); break;
+                case SceneSoftSurface surface: o.Add("file", surface.File).Add("resolution", surface.Resolution); break;
                 case SceneSoftObj obj: o.Add("file", obj.File).Add("thickness", obj.Thickness).Add("bendingScale", obj.BendingScale); break;
             }
             return o.Value;

@@ -109,6 +109,11 @@ namespace Fulcrum.Scenes
                         Ele = r.String("ele", required: true) ?? "",
                     };
                     break;
+                case SceneSoftMeshType.Surface:
+                    var surface = new SceneSoftSurface { File = r.String("file", required: true) ?? "" };
+                    surface.Resolution = r.Int("resolution", surface.Resolution);
+                    mesh = surface;
+                    break;
                 default:
                     var obj = new SceneSoftObj { File = r.String("file", required: true) ?? "" };
                     obj.Thickness = r.Float("thickness", obj.Thickness);

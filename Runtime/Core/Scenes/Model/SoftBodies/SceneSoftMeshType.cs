@@ -17,5 +17,7 @@ namespace Fulcrum.Scenes
         TetGen = 5,
         /// <summary><c>obj{file, thickness, bendingScale}</c>: a triangle shell read from a Wavefront OBJ file.</summary>
         Obj = 6,
+        /// <summary><c>surface{file, resolution}</c>: a closed triangle surface read from a Wavefront OBJ file and tetrahedralised.</summary>
+        Surface = 7,
     }
 }
