@@ -23,6 +23,8 @@ public static class Cli
     public const int ExitScene = 1;
     /// <summary>The command line is wrong.</summary>
     public const int ExitUsage = 2;
+    /// <summary>The run finished, but a body diverged (non-finite or out of the world bounds) and was stopped.</summary>
+    public const int ExitDiverged = 3;
 
     public const string Usage = """
         usage:

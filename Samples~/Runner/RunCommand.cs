@@ -54,7 +54,24 @@ static class RunCommand
             TextTable.Number(result.MaxPenetration), TextTable.Number(result.MaxJointError), TextTable.Number(result.EnergyDrift),
             TextTable.Number(result.VolumeError), TextTable.Number(result.MinJ));
         table.Write(output);
-        return Cli.ExitOk;
+        return ReportDivergence(scene, output);
+    }
+
+    /// <summary>
+    /// One line and <see cref="Cli.ExitDiverged"/> when a body of the run diverged (the world
+    /// stopped it; see World.Diverged), naming the last one, its step and what happened.
+    /// </summary>
+    public static int ReportDivergence(SceneInstance scene, TextWriter output)
+    {
+        World w = scene.World;
+        if (w.DivergenceCount == 0) return Cli.ExitOk;
+        Divergence d = w.LastDivergence;
+        string name = $"#{d.Body.Index}";
+        for (int k = 0; k < scene.BodyHandles.Count; k++)
+            if (scene.BodyHandles[k].Equals(d.Body)) name = $"'{scene.BodyName(k)}'";
+        string what = d.Kind == DivergenceKind.NonFinite ? "became non-finite" : $"left the world bounds (+-{Limits.MaxPosition:G} m)";
+        output.WriteLine($"diverged: {w.DivergenceCount} time(s); last: body {name} {what} in step {d.Step} and was stopped");
+        return Cli.ExitDiverged;
     }
 
     // The trace files, or a one-line reason naming the flag and the path.

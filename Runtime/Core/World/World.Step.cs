@@ -39,6 +39,7 @@ namespace Fulcrum
                 if (SoftBodyStage != null && SoftBodyStage.HasWork) SoftBodyStage.Step(this, dt);
                 t = Mark(StepStage.SoftBodies, t);
                 SolveContinuous(dt);
+                CheckDivergence();
                 t = Mark(StepStage.Continuous, t);
                 UpdateSleep(dt);
                 PublishEvents();

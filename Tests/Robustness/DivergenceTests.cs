@@ -1,0 +1,108 @@
+using System;
+using System.IO;
+using System.Numerics;
+using Fulcrum.Runner;
+using NUnit.Framework;
+using static Fulcrum.Tests.Solver.SolverTestScenes;
+
+namespace Fulcrum.Tests.Robustness
+{
+    /// <summary>
+    /// Divergence is reported, never hidden (issue 11): a body whose state turns non-finite or
+    /// leaves the world bounds is put back at its pose from the start of the step, stopped, and
+    /// reported with its handle, step and kind; the runner exits 3 with one line.
+    /// </summary>
+    public class DivergenceTests
+    {
+        [Test]
+        public void A_body_turned_non_finite_is_stopped_at_its_last_pose_and_reported()
+        {
+            var w = new World();
+            Ground(w);
+            BodyHandle box = Box(w, new Vector3(0, 0.5f, 0), new Vector3(0.5f), 1f);
+            BodyHandle top = Box(w, new Vector3(0, 1.5f, 0), new Vector3(0.5f), 1f);
+            for (int n = 0; n < 30; n++) w.Step(1 / 60f);
+            Vector3 before = w.GetBody(box).Position;
+            Divergence? seen = null;
+            w.Diverged += d => seen = d;
+            // What a solver bug would do: a NaN in the body's state (no public call can write one).
+            w.Bodies.LinearVelocity[box.Index] = new Vector3(float.NaN, 0, 0);
+            w.GetBody(box).WakeUp();
+            long step = w.StepIndex;
+            w.Step(1 / 60f);
+            Assert.That(seen.HasValue, "Diverged was raised");
+            Assert.That(seen!.Value.Body, Is.EqualTo(box));
+            Assert.That(seen.Value.Kind, Is.EqualTo(DivergenceKind.NonFinite));
+            Assert.That(seen.Value.Step, Is.EqualTo(step));
+            Assert.That(w.DivergenceCount, Is.EqualTo(1));
+            Assert.That(w.LastDivergence.Body, Is.EqualTo(box));
+            for (int n = 0; n < 60; n++) w.Step(1 / 60f);
+            foreach (BodyHandle b in new[] { box, top })
+            {
+                BodyRef r = w.GetBody(b);
+                Assert.That(float.IsFinite(r.Position.X + r.Position.Y + r.Position.Z + r.LinearVelocity.Length() + r.AngularVelocity.Length()), $"{b} stays finite");
+            }
+            Assert.That(Vector3.Distance(w.GetBody(box).Position, before), Is.LessThan(0.01f), "back at its pose and at rest");
+            Assert.That(w.DivergenceCount, Is.EqualTo(1), "once stopped it does not diverge again");
+        }
+
+        [Test]
+        public void A_body_leaving_the_world_bounds_is_reported_once_and_stopped_inside()
+        {
+            WorldSettings s = WorldSettings.Default;
+            s.Gravity = Vector3.Zero;
+            var w = new World(s);
+            BodyHandle b = Sphere(w, new Vector3(Limits.MaxPosition - 10, 0, 0), 0.5f, 1f);
+            BodyRef r = w.GetBody(b);
+            r.LinearVelocity = new Vector3(400, 0, 0);
+            int count = 0;
+            w.Diverged += d => count++;
+            for (int n = 0; n < 60; n++) w.Step(1 / 60f);
+            Assert.That(count, Is.EqualTo(1));
+            Assert.That(w.LastDivergence.Kind, Is.EqualTo(DivergenceKind.OutOfBounds));
+            Assert.That(w.GetBody(b).Position.X, Is.LessThanOrEqualTo(Limits.MaxPosition));
+            Assert.That(w.GetBody(b).LinearVelocity, Is.EqualTo(Vector3.Zero));
+        }
+
+        [Test]
+        public void A_world_that_diverges_nothing_allocates_nothing_for_the_check()
+        {
+            var w = new World();
+            Ground(w);
+            for (int i = 0; i < 10; i++) Box(w, new Vector3(0, 0.5f + i, 0), new Vector3(0.5f), 1f);
+            w.Diverged += d => Assert.Fail("nothing diverges");
+            long bytes = Components.AllocationProbe.SteadyStateBytes(() => w.Step(1 / 60f));
+            Assert.That(bytes, Is.EqualTo(0));
+            Assert.That(w.DivergenceCount, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void The_runner_exits_3_with_one_line_when_a_body_leaves_the_world()
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "fulcrum-diverge-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(dir);
+            try
+            {
+                string path = Path.Combine(dir, "escape.json");
+                File.WriteAllText(path, @"{
+  ""format"": ""fulcrum-scene/1"",
+  ""gravity"": [0, 0, 0],
+  ""bodies"": [
+    {""name"": ""runaway"", ""shape"": {""type"": ""sphere"", ""radius"": 0.5}, ""position"": [99990, 0, 0], ""velocity"": [400, 0, 0]}
+  ]
+}");
+                var output = new StringWriter();
+                var error = new StringWriter();
+                int code = Cli.Run(new[] { "run", path, "--seconds", "1" }, output, error);
+                string[] lines = output.ToString().Split('\n', StringSplitOptions.RemoveEmptyEntries);
+                TestContext.Out.WriteLine(output.ToString());
+                Assert.That(code, Is.EqualTo(Cli.ExitDiverged));
+                Assert.That(lines[lines.Length - 1], Does.StartWith("diverged: 1 time(s); last: body 'runaway' left the world bounds"));
+            }
+            finally
+            {
+                Directory.Delete(dir, recursive: true);
+            }
+        }
+    }
+}
