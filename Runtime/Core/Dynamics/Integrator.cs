@@ -80,6 +80,20 @@ namespace Fulcrum.Dynamics
         /// the angular velocity) advances by <see cref="RotateFreeBody"/>. Kinematic bodies
         /// rotate at constant angular velocity. Refreshes origin and world inertia.
         /// </summary>
+        /// <summary>
+        /// <see cref="ClampSpeed"/> for the dynamic bodies of slots [start, start + count): the
+        /// velocities the solver left, before they move the bodies.
+        /// </summary>
+        internal static void ClampSpeeds(BodyStorage b, int[] slots, int start, int count, float maxSpeed)
+        {
+            for (int k = start, end = start + count; k < end; k++)
+            {
+                int i = slots[k];
+                if (b.Type[i] != BodyType.Dynamic) continue;
+                ClampSpeed(maxSpeed, b.Radius[i], ref b.LinearVelocity[i], ref b.AngularVelocity[i]);
+            }
+        }
+
         internal static void IntegratePositions(BodyStorage b, float dt) => IntegratePositions(b, b.Active, 0, b.ActiveCount, dt);
 
         /// <summary>As above, for the body slots <paramref name="slots"/>[start .. start + count).</summary>

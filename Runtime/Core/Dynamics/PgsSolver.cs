@@ -24,6 +24,9 @@ namespace Fulcrum.Dynamics
             context.WarmStart();
             for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: false);
             context.StoreVelocities();
+            // The speed cap holds for what the constraints added too (a contradictory joint loop
+            // flung bodies at 1e5 m/s in WorldFuzz).
+            Integrator.ClampSpeeds(bodies, context.BodySlot, 1, context.BodyCount - 1, s.MaxLinearSpeed);
             Integrator.IntegratePositions(bodies, context.BodySlot, 1, context.BodyCount - 1, dt);
             // Restitution once the bodies have reached each other (a speculative contact closes
             // during the position update), as TGS does after its substeps.

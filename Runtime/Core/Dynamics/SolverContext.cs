@@ -549,9 +549,13 @@ namespace Fulcrum.Dynamics
                 if (Positions)
                 {
                     float h = c._h;
+                    float speedCap = c._settings.MaxLinearSpeed;
                     for (int k = start; k < end; k++)
                     {
                         ref SolverBody body = ref bodies[k];
+                        // The cap holds for what the constraints added too: a light body jointed
+                        // to a heavy one in a contradictory pose was flung at 1e5 m/s (WorldFuzz).
+                        if (body.IsDynamic != 0) Integrator.ClampSpeed(speedCap, s.Radius[c.BodySlot[k]], ref body.LinearVelocity, ref body.AngularVelocity);
                         body.DeltaPosition += h * body.LinearVelocity;
                         if (body.AngularVelocity == Vector3.Zero) continue;
                         int slot = c.BodySlot[k];

@@ -1,0 +1,160 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Tests.Robustness
+{
+    /// <summary>
+    /// A seeded generator of hostile worlds (issue 11): every shape kind (sphere, box, capsule,
+    /// hull, compounds with offset rotated children, thin plates), masses 0.01 to 1e4 kg,
+    /// speeds up to 100 m/s, 0-6 joints of every kind with random anchors, axes and limits
+    /// (bodies overlapping or misaligned at step 1), PGS or TGS with random iterations, substeps,
+    /// relax passes and 1-2 threads, gravity on or off, a ground box or none. The same seed
+    /// always builds the same world.
+    /// </summary>
+    public static class WorldFuzz
+    {
+        /// <summary>What a fuzzed world did.</summary>
+        public struct Outcome
+        {
+            /// <summary>A one-line reason when the world diverged (NaN, or beyond the world bounds), else null.</summary>
+            public string? Failure;
+            /// <summary>A one-line reason when a body got farther than its speeds allow (an energy blow-up short of divergence), else null.</summary>
+            public string? Escape;
+            /// <summary>True when the API refused the generated input (a clear exception is a pass).</summary>
+            public bool Refused;
+            /// <summary>The largest kinetic energy over the run, J.</summary>
+            public float MaxKinetic;
+        }
+
+        /// <summary>Builds world <paramref name="seed"/>, runs it <paramref name="steps"/> steps and checks it.</summary>
+        public static Outcome Run(int seed, int steps)
+        {
+            var r = new Random(seed);
+            float U() => (float)(r.NextDouble() * 2 - 1);
+            float Range(float lo, float hi) => lo + (hi - lo) * (float)r.NextDouble();
+            float LogRange(float lo, float hi) => MathF.Exp(Range(MathF.Log(lo), MathF.Log(hi)));
+            Vector3 Dir() => Vector3.Normalize(new Vector3(U(), U(), U()) + new Vector3(1e-3f));
+
+            WorldSettings s = WorldSettings.Default;
+            s.Solver = r.Next(2) == 0 ? SolverType.Pgs : SolverType.Tgs;
+            s.Iterations = 1 + r.Next(8);
+            s.Substeps = 1 + r.Next(8);
+            s.RelaxIterations = r.Next(3);
+            s.Threads = 1 + r.Next(2);
+            s.BlockSolver = r.Next(4) != 0;
+            bool gravity = r.Next(4) != 0;
+            if (!gravity) s.Gravity = Vector3.Zero;
+            var w = new World(s);
+            var outcome = new Outcome();
+            int bodies = 2 + r.Next(7);
+            var handles = new BodyHandle[bodies];
+            float maxSpeed = 0;
+            try
+            {
+                if (r.Next(3) != 0)
+                    w.AddShape(w.CreateBody(BodyDef.Static(new Vector3(0, -0.5f, 0))), ShapeDef.Of(ShapeGeometry.Box(new Vector3(20, 0.5f, 20))));
+                for (int i = 0; i < bodies; i++)
+                {
+                    BodyDef d = BodyDef.Dynamic(new Vector3(U() * 1.5f, Range(0.2f, 3f), U() * 1.5f));
+                    d.Rotation = Quaternion.Normalize(new Quaternion(U(), U(), U(), U() + 0.1f));
+                    d.Mass = LogRange(0.01f, 1e4f);
+                    if (r.Next(5) == 0)
+                    {
+                        d.LinearVelocity = Dir() * Range(0, 100);
+                        d.AngularVelocity = Dir() * Range(0, 30);
+                    }
+                    maxSpeed = MathF.Max(maxSpeed, d.LinearVelocity.Length());
+                    BodyHandle b = w.CreateBody(d);
+                    int children = r.Next(4) == 0 ? 2 + r.Next(2) : 1;
+                    for (int c = 0; c < children; c++)
+                    {
+                        ShapeDef shape = ShapeDef.Of(RandomShape(r));
+                        if (children > 1) shape.LocalPose = new Pose(new Vector3(U(), U(), U()) * 0.6f, Quaternion.Normalize(new Quaternion(U(), U(), U(), U() + 0.1f)));
+                        w.AddShape(b, shape);
+                    }
+                    handles[i] = b;
+                }
+                int joints = r.Next(7);
+                for (int k = 0; k < joints; k++)
+                {
+                    BodyHandle a = handles[r.Next(bodies)];
+                    BodyHandle b = r.Next(5) == 0 ? BodyHandle.None : handles[r.Next(bodies)];
+                    if (a.Equals(b)) continue;
+                    Vector3 anchorA = new Vector3(U(), U(), U()) * 0.6f;
+                    Vector3 anchorB = b.IsNone ? new Vector3(U() * 2, Range(0.5f, 4), U() * 2) : new Vector3(U(), U(), U()) * 0.6f;
+                    JointDef j;
+                    switch (r.Next(6))
+                    {
+                        case 0: j = JointDef.Ball(a, b, anchorA, anchorB); break;
+                        case 1:
+                            j = JointDef.Hinge(a, b, anchorA, anchorB, Dir(), Dir());
+                            if (r.Next(2) == 0) { j.LowerDeg = Range(-90, 0); j.UpperDeg = Range(0, 90); }
+                            if (r.Next(3) == 0) { j.MotorSpeed = Range(-20, 20); j.MaxMotorTorque = LogRange(1, 1e4f); }
+                            break;
+                        case 2:
+                            float min = Range(0, 1);
+                            j = JointDef.Distance(a, b, anchorA, anchorB, min, r.Next(2) == 0 ? min : min + Range(0, 1));
+                            break;
+                        case 3: j = JointDef.Fixed(a, b, anchorA, anchorB); break;
+                        case 4:
+                            j = JointDef.Prismatic(a, b, anchorA, anchorB, Dir());
+                            if (r.Next(2) == 0) { j.Lower = Range(-1, 0); j.Upper = Range(0, 1); }
+                            break;
+                        default: j = JointDef.ConeTwist(a, b, anchorA, anchorB, Dir(), Dir(), Range(5, 90), Range(5, 90)); break;
+                    }
+                    j.CollideConnected = r.Next(2) == 0;
+                    w.CreateJoint(j);
+                }
+            }
+            catch (ArgumentException)
+            {
+                outcome.Refused = true;
+                return outcome;
+            }
+
+            // The farthest a body may get: its start, plus its launch speed and free fall over
+            // the run, plus the speed cap's worth of one second for what contacts and joints add.
+            float time = steps / 60f;
+            float reach = 5 + (maxSpeed + 9.81f * time) * time + w.Settings.MaxLinearSpeed * 0.05f * time;
+            for (int n = 0; n < steps; n++)
+            {
+                w.Step(1f / 60f);
+                if (w.DivergenceCount > 0)
+                {
+                    outcome.Failure = $"seed {seed}: {w.LastDivergence} ({s.Solver}, {s.Iterations}x{s.Substeps}, relax {s.RelaxIterations})";
+                    return outcome;
+                }
+                float kinetic = 0;
+                foreach (BodyHandle h in handles)
+                {
+                    BodyRef b = w.GetBody(h);
+                    if (outcome.Escape == null && b.Position.Length() > reach)
+                        outcome.Escape = $"seed {seed}: {h} at {b.Position.Length():F0} m, beyond the {reach:F0} m its speeds allow (step {n}; {s.Solver}, {s.Iterations}x{s.Substeps})";
+                    kinetic += 0.5f * b.Mass * b.LinearVelocity.LengthSquared();
+                }
+                outcome.MaxKinetic = MathF.Max(outcome.MaxKinetic, kinetic);
+            }
+            return outcome;
+        }
+
+        static ShapeGeometry RandomShape(Random r)
+        {
+            float Range(float lo, float hi) => lo + (hi - lo) * (float)r.NextDouble();
+            switch (r.Next(5))
+            {
+                case 0: return ShapeGeometry.Sphere(Range(0.05f, 0.6f));
+                case 1: return ShapeGeometry.Box(new Vector3(Range(0.05f, 0.6f), Range(0.05f, 0.6f), Range(0.05f, 0.6f)));
+                case 2: return ShapeGeometry.Box(new Vector3(Range(0.2f, 0.8f), Range(0.005f, 0.02f), Range(0.2f, 0.8f))); // a thin plate
+                case 3: return ShapeGeometry.Capsule(Range(0.05f, 0.3f), Range(0.05f, 0.6f));
+                default:
+                {
+                    Span<Vector3> points = stackalloc Vector3[12];
+                    for (int i = 0; i < points.Length; i++)
+                        points[i] = new Vector3(Range(-0.4f, 0.4f), Range(-0.4f, 0.4f), Range(-0.4f, 0.4f));
+                    return ShapeGeometry.ConvexHull(points);
+                }
+            }
+        }
+    }
+}
