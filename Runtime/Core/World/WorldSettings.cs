@@ -109,7 +109,8 @@ namespace Fulcrum
         public float RestitutionThreshold;
         /// <summary>
         /// Speed cap for any point of a dynamic body, m/s (keeps a blown-up scene finite): each
-        /// velocity update clamps the centre's speed to it, and the angular speed to
+        /// velocity update, and the solver's result before it moves the bodies, clamps the
+        /// centre's speed to it, and the angular speed to
         /// MaxLinearSpeed / r (r: the farthest point of the body's shapes from its centre of
         /// mass) and to <see cref="Limits.MaxAngularSpeed"/>, so spin cannot fling a point past
         /// it either. A larger input velocity (up to <see cref="Limits.MaxInputSpeed"/>) is
