@@ -8,7 +8,8 @@ namespace Fulcrum.Dynamics
     /// Shock propagation (Guendelman, Bridson and Fedkiw 2003, "Nonconvex rigid bodies with
     /// stacking"; Erleben 2005): after the biased passes of a substep, the contacts are swept
     /// once from the ground up, each treating its lower body as immovable and removing the
-    /// upper body's approach at every point. A Gauss-Seidel row sees a heavy body through the
+    /// approach of its points' centroid by moving the upper body along the vertical (see
+    /// SweepManifold for why not point by point, nor along the normal). A Gauss-Seidel row sees a heavy body through the
     /// light body's effective mass, so it corrects the heavy body's approach by only m / M per
     /// pass and a 1000 kg box sinks into a 1 kg box (Documentation~/MassRatio.md); the sweep
     /// carries the ground's support up a stack in one pass whatever the masses.
@@ -68,7 +69,9 @@ namespace Fulcrum.Dynamics
         public int RowCount => _count;
 
         /// <summary>
-        /// Levels the step's bodies and collects the rows of the contacts between levels.
+        /// Levels the step's bodies and collects the rows of the contacts between levels, in a
+        /// step where some contact is within half of <paramref name="depth"/> (m) of the depth
+        /// or approaches fast enough to reach it in <paramref name="dt"/> (s); otherwise none.
         /// <paramref name="touching"/>: a point closer than this (m) makes its pair touch.
         /// </summary>
         public void Build(SolverBody[] bodies, int bodyCount, ContactManifold[] manifolds, int[] manifoldList, int manifoldCount,
