@@ -23,7 +23,7 @@ public static class Cli
     public const int ExitScene = 1;
     /// <summary>The command line is wrong.</summary>
     public const int ExitUsage = 2;
-    /// <summary>The run finished, but a body diverged (non-finite or out of the world bounds) and was stopped.</summary>
+    /// <summary>The run finished, but a body diverged (non-finite or out of the world bounds) and was stopped; for fuzz, a world diverged or escaped.</summary>
     public const int ExitDiverged = 3;
 
     public const string Usage = """
@@ -34,6 +34,8 @@ public static class Cli
           fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
                       [--seconds S | --steps N] [--dt X] [--threads N]
           fulcrum check SCENE.json         validate only: every error with its JSON path
+          fulcrum fuzz [--count N] [--seed S] [--steps K]
+                                           run N seeded hostile worlds; list any that diverge or escape
         """;
 
     /// <summary>Runs one command line; returns the exit code. Everything printed goes to the two writers.</summary>
@@ -48,11 +50,12 @@ public static class Cli
                 case "check": return CheckCommand.Run(new Arguments("check", args, 1), output, error);
                 case "sweep": return SweepCommand.Run(new Arguments("sweep", args, 1, SweepCommand.Flags), output);
                 case "report": return ReportCommand.Run(args[1..], output);
+                case "fuzz": return FuzzCommand.Run(new Arguments("fuzz", args, 1, FuzzCommand.Flags), output);
                 case "help" or "--help" or "-h":
                     output.WriteLine(Usage);
                     return ExitOk;
                 default:
-                    throw new UsageException($"unknown command '{args[0]}' (expected run, sweep or check; 'fulcrum help' lists them)");
+                    throw new UsageException($"unknown command '{args[0]}' (expected run, sweep, check or fuzz; 'fulcrum help' lists them)");
             }
         }
         catch (UsageException e)

@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using Fulcrum.Runner;
 using NUnit.Framework;
 
 namespace Fulcrum.Tests.Robustness
@@ -40,6 +41,22 @@ namespace Fulcrum.Tests.Robustness
             foreach (string e in escapes) TestContext.Out.WriteLine("escaped: " + e);
             Assert.That(failures, Is.Empty);
             Assert.That(escapes.Count, Is.LessThanOrEqualTo(escapesMeasured));
+        }
+
+        [Test]
+        public void The_fuzz_command_lists_failing_worlds_and_exits_3_only_when_one_failed()
+        {
+            var output = new System.IO.StringWriter();
+            var error = new System.IO.StringWriter();
+            int code = Cli.Run(new[] { "fuzz", "--count", "30", "--seed", "0", "--steps", "120" }, output, error);
+            string[] lines = output.ToString().Split('\n', System.StringSplitOptions.RemoveEmptyEntries);
+            TestContext.Out.WriteLine(output.ToString());
+            string last = lines[lines.Length - 1].Trim();
+            Assert.That(last, Does.StartWith("fuzz: 30 worlds from seed 0, 120 steps each: "));
+            int listed = lines.Length - 1;
+            Assert.That(code, Is.EqualTo(listed > 0 ? Cli.ExitDiverged : Cli.ExitOk));
+            foreach (string line in lines[..^1]) Assert.That(line, Does.StartWith("escaped: seed ").Or.StartWith("diverged: seed "));
+            Assert.That(error.ToString(), Is.Empty);
         }
     }
 }

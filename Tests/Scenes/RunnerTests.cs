@@ -93,7 +93,7 @@ namespace Fulcrum.Tests.Scenes
         public void Usage_errors_exit_2_with_one_line()
         {
             Assert.That(Fulcrum("check").code, Is.EqualTo(2));
-            Assert.That(Fulcrum("frobnicate").error, Is.EqualTo("fulcrum: error: unknown command 'frobnicate' (expected run, sweep or check; 'fulcrum help' lists them)\n").Or.EqualTo("fulcrum: error: unknown command 'frobnicate' (expected run, sweep or check; 'fulcrum help' lists them)" + Environment.NewLine));
+            Assert.That(Fulcrum("frobnicate").error, Is.EqualTo("fulcrum: error: unknown command 'frobnicate' (expected run, sweep, check or fuzz; 'fulcrum help' lists them)\n").Or.EqualTo("fulcrum: error: unknown command 'frobnicate' (expected run, sweep, check or fuzz; 'fulcrum help' lists them)" + Environment.NewLine));
             (int code, string output, string error) = Fulcrum("run", Scene("free-fall"), "--steps", "ten");
             Assert.That(code, Is.EqualTo(2));
             Assert.That(output, Is.Empty);

@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using Fulcrum.Mathematics;
 
-namespace Fulcrum.Tests.Robustness
+namespace Fulcrum.Runner
 {
     /// <summary>
     /// A seeded generator of hostile worlds (issue 11): every shape kind (sphere, box, capsule,
@@ -10,7 +10,8 @@ namespace Fulcrum.Tests.Robustness
     /// speeds up to 100 m/s, 0-6 joints of every kind with random anchors, axes and limits
     /// (bodies overlapping or misaligned at step 1), PGS or TGS with random iterations, substeps,
     /// relax passes and 1-2 threads, gravity on or off, a ground box or none. The same seed
-    /// always builds the same world.
+    /// always builds the same world. Used by the CI fuzz tests (Tests/Robustness) and by
+    /// <c>fulcrum fuzz</c> for longer runs.
     /// </summary>
     public static class WorldFuzz
     {
