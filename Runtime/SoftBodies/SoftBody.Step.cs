@@ -12,9 +12,31 @@ namespace Fulcrum.SoftBodies
         /// <summary>Once per world step, before the substeps: find the shapes and pairs the step may touch.</summary>
         internal void BeginStep(float dt, RigidCoupling coupling)
         {
+            Array.Copy(X, XStart, X.Length);
             if (CollideWithShapes) Contacts.Gather(World, this, dt, coupling);
             AttachmentSolver.Track(World, Attachments, coupling);
             SelfContacts?.FindPairs(X, V, dt);
+        }
+
+        /// <summary>
+        /// True when every vertex position and velocity is finite and inside the world bounds;
+        /// otherwise puts every vertex back at its step-start position at rest and returns false.
+        /// </summary>
+        internal bool KeepFinite()
+        {
+            float bound = Limits.MaxPosition;
+            bool bad = false;
+            for (int i = 0; i < X.Length && !bad; i++)
+            {
+                Vector3 x = X[i], v = V[i];
+                bad = !float.IsFinite(x.X + x.Y + x.Z + v.X + v.Y + v.Z)
+                    || MathF.Abs(x.X) > bound || MathF.Abs(x.Y) > bound || MathF.Abs(x.Z) > bound;
+            }
+            if (!bad) return true;
+            Array.Copy(XStart, X, X.Length);
+            Array.Copy(XStart, XPrev, X.Length);
+            Array.Clear(V, 0, V.Length);
+            return false;
         }
 
         /// <summary>

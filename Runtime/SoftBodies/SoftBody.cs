@@ -21,6 +21,8 @@ namespace Fulcrum.SoftBodies
         // Vertex state (world).
         internal readonly Vector3[] X;
         internal readonly Vector3[] XPrev;
+        // Positions at the start of the step: where a diverged body is put back (SoftBodySystem).
+        internal readonly Vector3[] XStart;
         internal readonly Vector3[] V;
         internal readonly float[] W;
         internal readonly float[] M;
@@ -81,6 +83,7 @@ namespace Fulcrum.SoftBodies
             int n = rest.Length;
             X = new Vector3[n];
             XPrev = new Vector3[n];
+            XStart = new Vector3[n];
             V = new Vector3[n];
             W = new float[n];
             M = new float[n];

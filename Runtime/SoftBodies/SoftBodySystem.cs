@@ -103,7 +103,31 @@ namespace Fulcrum.SoftBodies
                 for (int k = 0; k < _active.Count; k++) _active[k].Substep(h, _coupling, pool);
                 if (_softContacts.PairCount > 0) _softContacts.Solve(h);
             }
-            for (int k = 0; k < _active.Count; k++) _active[k].EndStep(dt);
+            for (int k = 0; k < _active.Count; k++)
+            {
+                _active[k].EndStep(dt);
+                if (_active[k].KeepFinite()) continue;
+                DivergenceCount++;
+                LastDiverged = _active[k].Handle;
+                LastDivergedStep = world.StepIndex;
+                Diverged?.Invoke(LastDiverged, LastDivergedStep);
+            }
         }
+
+        /// <summary>
+        /// Raised (on the stepping thread) for a soft body whose vertices became non-finite or left
+        /// the world bounds (±<see cref="Limits.MaxPosition"/> m) in a step, with the step index:
+        /// the body was put back at its pose from the start of that step, at rest.
+        /// </summary>
+        public event Action<SoftBodyHandle, long>? Diverged;
+
+        /// <summary>Soft bodies that diverged since the system was created.</summary>
+        public int DivergenceCount { get; private set; }
+
+        /// <summary>The soft body that diverged last, and the step it diverged in.</summary>
+        public SoftBodyHandle LastDiverged { get; private set; }
+
+        /// <inheritdoc cref="LastDiverged"/>
+        public long LastDivergedStep { get; private set; }
     }
 }

@@ -64,7 +64,10 @@ static class RunCommand
     public static int ReportDivergence(SceneInstance scene, TextWriter output)
     {
         World w = scene.World;
-        if (w.DivergenceCount == 0) return Cli.ExitOk;
+        SoftBodies.SoftBodySystem? soft = SoftBodies.SoftBodySystem.Of(w);
+        if (soft != null && soft.DivergenceCount > 0)
+            output.WriteLine($"diverged: {soft.DivergenceCount} time(s); last: soft body {soft.LastDiverged} became non-finite or left the world bounds in step {soft.LastDivergedStep} and was put back at rest");
+        if (w.DivergenceCount == 0) return soft != null && soft.DivergenceCount > 0 ? Cli.ExitDiverged : Cli.ExitOk;
         Divergence d = w.LastDivergence;
         string name = $"#{d.Body.Index}";
         for (int k = 0; k < scene.BodyHandles.Count; k++)

@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Numerics;
 using Fulcrum.Runner;
+using Fulcrum.SoftBodies;
 using NUnit.Framework;
 using static Fulcrum.Tests.Solver.SolverTestScenes;
 
@@ -62,6 +63,28 @@ namespace Fulcrum.Tests.Robustness
             Assert.That(w.LastDivergence.Kind, Is.EqualTo(DivergenceKind.OutOfBounds));
             Assert.That(w.GetBody(b).Position.X, Is.LessThanOrEqualTo(Limits.MaxPosition));
             Assert.That(w.GetBody(b).LinearVelocity, Is.EqualTo(Vector3.Zero));
+        }
+
+        [Test]
+        public void A_soft_body_turned_non_finite_is_put_back_at_rest_and_reported()
+        {
+            var w = new World();
+            Ground(w);
+            SoftBodyHandle jelly = w.CreateSoftBody(SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.5f), 2, 2, 2), MaterialPresets.Jelly, new Vector3(0, 0.3f, 0)));
+            for (int n = 0; n < 20; n++) w.Step(1 / 60f);
+            SoftBodySystem system = SoftBodySystem.Of(w)!;
+            SoftBody body = w.GetSoftBody(jelly);
+            long reportedStep = -1;
+            system.Diverged += (h, step) => reportedStep = step;
+            long stepIndex = w.StepIndex;
+            body.V[3] = new Vector3(float.NaN, 0, 0); // what a solver bug would do
+            w.Step(1 / 60f);
+            Assert.That(system.DivergenceCount, Is.EqualTo(1));
+            Assert.That(system.LastDiverged, Is.EqualTo(jelly));
+            Assert.That(reportedStep, Is.EqualTo(stepIndex));
+            for (int n = 0; n < 30; n++) w.Step(1 / 60f);
+            foreach (Vector3 x in body.X) Assert.That(float.IsFinite(x.X + x.Y + x.Z));
+            Assert.That(system.DivergenceCount, Is.EqualTo(1));
         }
 
         [Test]
