@@ -69,6 +69,8 @@ namespace Fulcrum.Scenes
                     if (doc.Solver.ContactHertz is float contactHertz) Positive(contactHertz, P(solver, "contactHertz"));
                     if (doc.Solver.JointHertz is float jointHertz) Positive(jointHertz, P(solver, "jointHertz"));
                     if (doc.Solver.ManifoldReuse is float reuse) NonNegative(reuse, P(solver, "manifoldReuse"));
+                    if (doc.Solver.ShockDepth is float shockDepth) NonNegative(shockDepth, P(solver, "shockDepth"));
+                    if (doc.Solver.MaxJointCorrectionSpeed is float jointSpeed) Positive(jointSpeed, P(solver, "maxJointCorrectionSpeed"));
                 }
                 Materials();
                 for (int i = 0; i < doc.Bodies.Count; i++) Body(doc.Bodies[i], JsonPath.Index("$.bodies", i));

@@ -30,6 +30,9 @@ namespace Fulcrum.Scenes
             if (document.Solver.ContactHertz is float contactHertz) settings.ContactHertz = contactHertz;
             if (document.Solver.JointHertz is float jointHertz) settings.JointHertz = jointHertz;
             if (document.Solver.ManifoldReuse is float reuse) settings.ManifoldReuseDistance = reuse;
+            if (document.Solver.ShockPropagation is bool shock) settings.ShockPropagation = shock;
+            if (document.Solver.ShockDepth is float shockDepth) settings.ShockDepth = shockDepth;
+            if (document.Solver.MaxJointCorrectionSpeed is float jointSpeed) settings.MaxJointCorrectionSpeed = jointSpeed;
 
             SceneExpansion e = document.Expand();
             // Every geometry first: an unsupported shape fails before a world exists.

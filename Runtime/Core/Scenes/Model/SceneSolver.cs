@@ -29,5 +29,23 @@ namespace Fulcrum.Scenes
         /// an extension), &gt;= 0; 0 turns reuse off. Null: the WorldSettings default (1 mm).
         /// </summary>
         public float? ManifoldReuse { get; set; }
+
+        /// <summary>
+        /// <c>shockPropagation</c>: the TGS sweep that stops heavy loads sinking into light bodies
+        /// (<see cref="WorldSettings.ShockPropagation"/>; an extension). Null: the default (on).
+        /// </summary>
+        public bool? ShockPropagation { get; set; }
+
+        /// <summary>
+        /// <c>shockDepth</c>: the depth, m, past which the sweep stops a contact sinking
+        /// (<see cref="WorldSettings.ShockDepth"/>; an extension), &gt;= 0. Null: the default (2 mm).
+        /// </summary>
+        public float? ShockDepth { get; set; }
+
+        /// <summary>
+        /// <c>maxJointCorrectionSpeed</c>: the fastest a violated joint is pulled back, m/s or rad/s
+        /// (<see cref="WorldSettings.MaxJointCorrectionSpeed"/>; an extension), &gt; 0. Null: the default (4).
+        /// </summary>
+        public float? MaxJointCorrectionSpeed { get; set; }
     }
 }

@@ -47,6 +47,9 @@ namespace Fulcrum.Scenes
             s.ContactHertz = r.OptionalFloat("contactHertz");
             s.JointHertz = r.OptionalFloat("jointHertz");
             s.ManifoldReuse = r.OptionalFloat("manifoldReuse");
+            s.ShockPropagation = r.OptionalBool("shockPropagation");
+            s.ShockDepth = r.OptionalFloat("shockDepth");
+            s.MaxJointCorrectionSpeed = r.OptionalFloat("maxJointCorrectionSpeed");
             r.Finish();
             return s;
         }
