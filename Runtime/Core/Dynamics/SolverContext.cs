@@ -507,13 +507,6 @@ namespace Fulcrum.Dynamics
             else _bodyJob.Execute(1, BodyCount);
         }
 
-        /// <summary>
-        /// dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps); a dynamic
-        /// body whose principal moments differ turns as a free body does
-        /// (<see cref="Integrator.RotateFreeBody"/>), so that its angular momentum, not its
-        /// angular velocity, is what carries over between constraint impulses (the gyroscopic
-        /// terms).
-        /// </summary>
         /// <summary>Levels the step's bodies and collects the contacts between levels for <see cref="Shock"/>.</summary>
         public void PrepareShock(IslandBuilder islands) =>
             _shock.Build(Bodies, BodyCount, _manifolds, islands.Manifolds, islands.ManifoldCount, _indexOfSlot, _settings.LinearSlop, _settings.ShockDepth, _dt);
@@ -526,6 +519,13 @@ namespace Fulcrum.Dynamics
             _shock.Sweep(Bodies, _settings.ShockDepth, length > 0 ? -g / length : Vector3.Zero);
         }
 
+        /// <summary>
+        /// dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps); a dynamic
+        /// body whose principal moments differ turns as a free body does
+        /// (<see cref="Integrator.RotateFreeBody"/>), so that its angular momentum, not its
+        /// angular velocity, is what carries over between constraint impulses (the gyroscopic
+        /// terms).
+        /// </summary>
         public void IntegratePositions()
         {
             _bodyJob.Positions = true;
