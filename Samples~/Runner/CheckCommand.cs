@@ -11,19 +11,7 @@ static class CheckCommand
     public static int Run(Arguments a, TextWriter output, TextWriter error)
     {
         string path = a.Scene();
-        string text;
-        try
-        {
-            text = SceneFile.ReadText(path);
-        }
-        catch (FileNotFoundException)
-        {
-            throw new UsageException($"{path}: no such scene file", Cli.ExitScene);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            throw new UsageException($"{path}: cannot read: {e.Message}", Cli.ExitScene);
-        }
+        string text = SceneSetup.ReadText(path);
         IReadOnlyList<SceneError> errors = SceneFile.Check(text, out SceneDocument? doc);
         foreach (SceneError e in errors) error.WriteLine($"{path}: {e}");
         if (errors.Count > 0)

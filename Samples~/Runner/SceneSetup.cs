@@ -8,13 +8,12 @@ namespace Fulcrum.Runner;
 /// <summary>Loading a scene file and applying the command line's overrides, with one-line reasons on failure.</summary>
 static class SceneSetup
 {
-    /// <summary>Reads and validates a scene; a problem becomes a <see cref="UsageException"/> naming the file and the field.</summary>
-    public static SceneDocument Load(string path)
+    /// <summary>A scene file's text; a missing or unreadable file becomes a one-line <see cref="UsageException"/>.</summary>
+    public static string ReadText(string path)
     {
-        string text;
         try
         {
-            text = SceneFile.ReadText(path);
+            return SceneFile.ReadText(path);
         }
         catch (FileNotFoundException)
         {
@@ -24,6 +23,12 @@ static class SceneSetup
         {
             throw new UsageException($"{path}: cannot read: {e.Message}", Cli.ExitScene);
         }
+    }
+
+    /// <summary>Reads and validates a scene; a problem becomes a <see cref="UsageException"/> naming the file and the field.</summary>
+    public static SceneDocument Load(string path)
+    {
+        string text = ReadText(path);
         try
         {
             return SceneFile.Parse(text);
