@@ -10,7 +10,7 @@ namespace Fulcrum.Tests.Robustness
     /// world bounds: World.Diverged never fires). The failing seeds are listed one per line so
     /// each can be replayed on its own.
     /// <para>
-    /// Known and not yet fixed: in about 3 % of these worlds a light body jointed or pressed to
+    /// Known and not yet fixed: in about 1-2 % of these worlds a light body jointed or pressed to
     /// a much heavier one, or a thin plate spun by a joint anchor a few millimetres from its
     /// centre, is flung at up to the speed cap and ends farther than its launch speed and
     /// gravity allow (an energy gain short of divergence). That count is measured and held here
@@ -19,11 +19,12 @@ namespace Fulcrum.Tests.Robustness
     /// </summary>
     public class WorldFuzzTests
     {
-        // Measured on seeds 0-299 (180 steps each): 0 refused, 0 diverged, 10 escaped (6 + 4).
+        // Measured on seeds 0-299 (180 steps each): 0 refused, 0 diverged, 4 escaped (3 + 1).
         // Before the speed cap was applied to the solver's velocities too, 12 of them left the
-        // world bounds (flung at up to 1e5 m/s) and 19 escaped.
-        [TestCase(0, 150, 6)]
-        [TestCase(150, 150, 4)]
+        // world bounds (flung at up to 1e5 m/s) and 19 escaped; before the hinge's swing row,
+        // 10 escaped.
+        [TestCase(0, 150, 3)]
+        [TestCase(150, 150, 1)]
         public void Hostile_worlds_are_refused_or_never_diverge(int firstSeed, int count, int escapesMeasured)
         {
             var failures = new List<string>();

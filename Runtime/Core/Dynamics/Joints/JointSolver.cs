@@ -160,6 +160,9 @@ namespace Fulcrum.Dynamics
             }
         }
 
+        /// <summary>cos 30 degrees: past this misalignment a hinge realigns its axes with one swing row.</summary>
+        const float SwingCosine = 0.8660254f;
+
         static void Hinge(ref JointData j, ref SolverBody a, ref SolverBody b, Pass pass, in StepParameters p,
             Vector3 rA, Vector3 rB, Vector3 d, Quaternion fA, Quaternion fB)
         {
@@ -170,6 +173,25 @@ namespace Fulcrum.Dynamics
             float e1 = Vector3.Dot(axis, b2), e2 = Vector3.Dot(axis, c2);
             float angle = TwistAngle(fA, fB);
             bool lower = j.HasLowerLimit, upper = j.HasUpperLimit, motor = j.MaxMotorForce > 0, spring = j.SpringHertz > 0;
+            // The two rotation rows are a small-angle form: their directions b2 x a1, c2 x a1 lose
+            // the swing that realigns the axes as the misalignment grows, and at 90 degrees it is
+            // gone (the hinge stayed misaligned). Past SwingAngle the axes are realigned instead
+            // by one row about n = a1 x a2 whose error is the angle between them (the cone part,
+            // which a hinge does not otherwise use), and the small-angle rows rest.
+            Vector3 a2 = Vector3.Transform(Vector3.UnitX, fB);
+            float cosine = Vector3.Dot(axis, a2);
+            bool swing = cosine < SwingCosine;
+            float swingAngle = 0;
+            if (swing)
+            {
+                Vector3 n = Vector3.Cross(axis, a2);
+                float sine = n.Length();
+                n = sine > 1e-6f ? n / sine : b2; // antiparallel: any direction across the axis
+                swingAngle = MathF.Atan2(sine, cosine);
+                j.Cone.SetAngular(n);
+                j.HingeRotation.Impulse1 = j.HingeRotation.Impulse2 = 0;
+            }
+            else j.Cone.Impulse = 0;
             j.LowerLimit.SetAngular(axis);
             j.UpperLimit.SetAngular(-axis);
             j.Motor.SetAngular(axis);
@@ -178,6 +200,7 @@ namespace Fulcrum.Dynamics
             {
                 j.Point.ComputeMass(a, b, rA, rB);
                 j.HingeRotation.ComputeMass(a, b, u1, u2);
+                if (swing) j.Cone.ComputeMass(a, b);
                 j.Motor.ComputeMass(a, b);
                 j.LowerLimit.EffectiveMass = j.UpperLimit.EffectiveMass = j.Spring.EffectiveMass = j.Motor.EffectiveMass;
             }
@@ -190,7 +213,8 @@ namespace Fulcrum.Dynamics
                     if (motor) j.Motor.WarmStart(ref a, ref b);
                     if (lower) j.LowerLimit.WarmStart(ref a, ref b);
                     if (upper) j.UpperLimit.WarmStart(ref a, ref b);
-                    j.HingeRotation.WarmStart(ref a, ref b, u1, u2);
+                    if (swing) j.Cone.WarmStart(ref a, ref b);
+                    else j.HingeRotation.WarmStart(ref a, ref b, u1, u2);
                     j.Point.WarmStart(ref a, ref b, rA, rB);
                     break;
                 case Pass.Solve:
@@ -202,19 +226,21 @@ namespace Fulcrum.Dynamics
                     if (motor) SolveMotor(ref j.Motor, ref a, ref b, j.MotorSpeed, j.MaxMotorForce * p.H);
                     if (lower) j.LowerLimit.SolveLimit(ref a, ref b, angle - j.Lower, p.Joint, p.InvH, useBias);
                     if (upper) j.UpperLimit.SolveLimit(ref a, ref b, j.Upper - angle, p.Joint, p.InvH, useBias);
-                    j.HingeRotation.Solve(ref a, ref b, u1, u2, e1, e2, p.Joint, useBias);
+                    if (swing) j.Cone.SolveEquality(ref a, ref b, swingAngle, p.Joint, useBias);
+                    else j.HingeRotation.Solve(ref a, ref b, u1, u2, e1, e2, p.Joint, useBias);
                     j.Point.Solve(ref a, ref b, rA, rB, d, p.Joint, useBias);
                     break;
                 }
                 case Pass.Position:
                     if (lower) j.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(angle - j.Lower, 0), p.Beta);
                     if (upper) j.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.Upper - angle, 0), p.Beta);
-                    j.HingeRotation.SolvePosition(ref a, ref b, u1, u2, e1, e2, p.Beta);
+                    if (swing) j.Cone.SolvePosition(ref a, ref b, swingAngle, p.Beta);
+                    else j.HingeRotation.SolvePosition(ref a, ref b, u1, u2, e1, e2, p.Beta);
                     j.Point.SolvePosition(ref a, ref b, rA, rB, d, p.Beta);
                     break;
                 default:
                 {
-                    Vector3 torque = j.HingeRotation.Impulse1 * u1 + j.HingeRotation.Impulse2 * u2
+                    Vector3 torque = j.HingeRotation.Impulse1 * u1 + j.HingeRotation.Impulse2 * u2 + j.Cone.Impulse * j.Cone.AngularB
                         + (j.Motor.Impulse + j.Spring.Impulse + j.LowerLimit.Impulse - j.UpperLimit.Impulse) * axis + j.FrictionImpulse;
                     Report(ref j, p, j.Point.Impulse, torque, d.Length());
                     break;
