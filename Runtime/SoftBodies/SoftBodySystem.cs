@@ -12,7 +12,7 @@ namespace Fulcrum.SoftBodies
     /// Reads and writes the rigid bodies it touches (pose, velocity) through <see cref="RigidCoupling"/>.
     /// Bodies that touch each other are resolved after every substep by <see cref="SoftSoftContacts"/>.
     /// </summary>
-    public sealed class SoftBodySystem : ISoftBodyStage
+    public sealed partial class SoftBodySystem : ISoftBodyStage
     {
         readonly World _world;
         readonly List<SoftBody?> _slots = new List<SoftBody?>();

@@ -9,6 +9,7 @@ namespace Fulcrum.Runner;
 /// fulcrum                                   the showcase report over Samples~/Scenes
 /// fulcrum run SCENE.json [--seconds S | --steps N] [--dt X] [--solver pgs|tgs]
 ///             [--iterations N] [--substeps N] [--threads N] [--trace OUT.csv] [--every K]
+///             [--save-state FILE] [--restore-state FILE]
 /// fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
 ///             (also --seconds S | --steps N, --dt X, --threads N)
 /// fulcrum check SCENE.json
@@ -31,6 +32,8 @@ public static class Cli
           fulcrum                          run the showcase scenes in Samples~/Scenes and print a report
           fulcrum run SCENE.json [--seconds S | --steps N] [--dt X] [--solver pgs|tgs]
                       [--iterations N] [--substeps N] [--threads N] [--trace OUT.csv] [--every K]
+                      [--save-state FILE] [--restore-state FILE]
+                                           save the world state after the run / restore one before it
           fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
                       [--seconds S | --steps N] [--dt X] [--threads N]
           fulcrum check SCENE.json         validate only: every error with its JSON path

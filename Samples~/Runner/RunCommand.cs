@@ -8,7 +8,7 @@ namespace Fulcrum.Runner;
 static class RunCommand
 {
     public static readonly string[] Flags =
-        { "--seconds", "--steps", "--dt", "--solver", "--iterations", "--substeps", "--threads", "--trace", "--every" };
+        { "--seconds", "--steps", "--dt", "--solver", "--iterations", "--substeps", "--threads", "--trace", "--every", "--save-state", "--restore-state" };
 
     /// <summary>Simulated time when neither --steps nor --seconds is given, s.</summary>
     public const float DefaultSeconds = 5f;
@@ -22,6 +22,8 @@ static class RunCommand
         if (tracePath != null && tracePath.Length == 0) throw new UsageException("--trace: expected a file name");
         if (tracePath != null && Directory.Exists(tracePath)) throw new UsageException($"--trace: '{tracePath}' is a directory; give a file name such as {Path.Combine(tracePath, "trace.csv")}");
         if (a.Has("--every") && tracePath == null) throw new UsageException("--every: only applies with --trace");
+        string? restorePath = a.String("--restore-state"), savePath = a.String("--save-state");
+        StateFlags.Check(restorePath, savePath);
         WorldSettings settings = SceneSetup.Settings(a);
         SceneDocument doc = SceneSetup.Load(path);
         SceneSetup.ApplySolverFlags(doc, a);
@@ -37,6 +39,7 @@ static class RunCommand
                          (s.Type == SolverType.Tgs ? $" x {s.Substeps} substeps" : "") +
                          $", dt {SceneSetup.F(doc.Timestep)} s, {steps} steps ({SceneSetup.F(steps * doc.Timestep)} s), threads {settings.Threads}");
         if (softNote != null) output.WriteLine("note: " + softNote);
+        if (restorePath != null) StateFlags.Restore(scene, restorePath, output);
 
         RunResult result;
         if (tracePath != null)
@@ -54,6 +57,7 @@ static class RunCommand
             TextTable.Number(result.MaxPenetration), TextTable.Number(result.MaxJointError), TextTable.Number(result.EnergyDrift),
             TextTable.Number(result.VolumeError), TextTable.Number(result.MinJ));
         table.Write(output);
+        if (savePath != null) StateFlags.Save(scene, savePath, output);
         return ReportDivergence(scene, output);
     }
 

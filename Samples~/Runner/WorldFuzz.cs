@@ -31,6 +31,46 @@ namespace Fulcrum.Runner
         /// <summary>Builds world <paramref name="seed"/>, runs it <paramref name="steps"/> steps and checks it.</summary>
         public static Outcome Run(int seed, int steps)
         {
+            var outcome = new Outcome();
+            World? w = Build(seed, out BodyHandle[] handles, out float maxSpeed);
+            if (w == null)
+            {
+                outcome.Refused = true;
+                return outcome;
+            }
+            WorldSettings s = w.Settings;
+
+            // The farthest a body may get: its start, plus its launch speed and free fall over
+            // the run, plus the speed cap's worth of one second for what contacts and joints add.
+            float time = steps / 60f;
+            float reach = 5 + (maxSpeed + 9.81f * time) * time + w.Settings.MaxLinearSpeed * 0.05f * time;
+            for (int n = 0; n < steps; n++)
+            {
+                w.Step(1f / 60f);
+                if (w.DivergenceCount > 0)
+                {
+                    outcome.Failure = $"seed {seed}: {w.LastDivergence} ({s.Solver}, {s.Iterations}x{s.Substeps}, relax {s.RelaxIterations})";
+                    return outcome;
+                }
+                float kinetic = 0;
+                foreach (BodyHandle h in handles)
+                {
+                    BodyRef b = w.GetBody(h);
+                    if (outcome.Escape == null && b.Position.Length() > reach)
+                        outcome.Escape = $"seed {seed}: {h} at {b.Position.Length():F0} m, beyond the {reach:F0} m its speeds allow (step {n}; {s.Solver}, {s.Iterations}x{s.Substeps})";
+                    kinetic += 0.5f * b.Mass * b.LinearVelocity.LengthSquared();
+                }
+                outcome.MaxKinetic = MathF.Max(outcome.MaxKinetic, kinetic);
+            }
+            return outcome;
+        }
+
+        /// <summary>
+        /// Builds world <paramref name="seed"/> (the same seed always builds the same world), or
+        /// returns null when the API refused the generated input with an <see cref="ArgumentException"/>.
+        /// </summary>
+        public static World? Build(int seed, out BodyHandle[] handles, out float maxSpeed)
+        {
             var r = new Random(seed);
             float U() => (float)(r.NextDouble() * 2 - 1);
             float Range(float lo, float hi) => lo + (hi - lo) * (float)r.NextDouble();
@@ -47,10 +87,9 @@ namespace Fulcrum.Runner
             bool gravity = r.Next(4) != 0;
             if (!gravity) s.Gravity = Vector3.Zero;
             var w = new World(s);
-            var outcome = new Outcome();
             int bodies = 2 + r.Next(7);
-            var handles = new BodyHandle[bodies];
-            float maxSpeed = 0;
+            handles = new BodyHandle[bodies];
+            maxSpeed = 0;
             try
             {
                 if (r.Next(3) != 0)
@@ -110,33 +149,9 @@ namespace Fulcrum.Runner
             }
             catch (ArgumentException)
             {
-                outcome.Refused = true;
-                return outcome;
+                return null; // refused with a clear error: a pass
             }
-
-            // The farthest a body may get: its start, plus its launch speed and free fall over
-            // the run, plus the speed cap's worth of one second for what contacts and joints add.
-            float time = steps / 60f;
-            float reach = 5 + (maxSpeed + 9.81f * time) * time + w.Settings.MaxLinearSpeed * 0.05f * time;
-            for (int n = 0; n < steps; n++)
-            {
-                w.Step(1f / 60f);
-                if (w.DivergenceCount > 0)
-                {
-                    outcome.Failure = $"seed {seed}: {w.LastDivergence} ({s.Solver}, {s.Iterations}x{s.Substeps}, relax {s.RelaxIterations})";
-                    return outcome;
-                }
-                float kinetic = 0;
-                foreach (BodyHandle h in handles)
-                {
-                    BodyRef b = w.GetBody(h);
-                    if (outcome.Escape == null && b.Position.Length() > reach)
-                        outcome.Escape = $"seed {seed}: {h} at {b.Position.Length():F0} m, beyond the {reach:F0} m its speeds allow (step {n}; {s.Solver}, {s.Iterations}x{s.Substeps})";
-                    kinetic += 0.5f * b.Mass * b.LinearVelocity.LengthSquared();
-                }
-                outcome.MaxKinetic = MathF.Max(outcome.MaxKinetic, kinetic);
-            }
-            return outcome;
+            return w;
         }
 
         static ShapeGeometry RandomShape(Random r)

@@ -9,6 +9,9 @@ namespace Fulcrum.Tests.RigidScenes
     /// <summary>Loads the showcase scenes of Samples~/Scenes and measures what their tests assert.</summary>
     static class RigidSceneFiles
     {
+        /// <summary>The Samples~/Scenes folder (soft-body meshes are found relative to it).</summary>
+        public static string ScenesDirectory => ScenesDir();
+
         static string ScenesDir()
         {
             for (var d = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); d != null; d = d.Parent)

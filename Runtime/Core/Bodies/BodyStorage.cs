@@ -10,7 +10,7 @@ namespace Fulcrum
     /// also kept densely in <see cref="Active"/> so that stage loops walk only real bodies.
     /// Internal: the public view is <see cref="BodyRef"/>.
     /// </summary>
-    internal sealed class BodyStorage
+    internal sealed partial class BodyStorage
     {
         // Hot: read or written by every stage loop.
         public Vector3[] Position = Array.Empty<Vector3>();          // body origin, world
@@ -51,7 +51,7 @@ namespace Fulcrum
         public string?[] Name = Array.Empty<string?>();
         public ulong[] UserData = Array.Empty<ulong>();
 
-        readonly SlotAllocator _slots = new SlotAllocator();
+        SlotAllocator _slots = new SlotAllocator();
 
         /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
         public int[] Generation => _slots.Generation;

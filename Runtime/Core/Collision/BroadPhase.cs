@@ -10,7 +10,7 @@ namespace Fulcrum.Collision
     /// one. Only moved proxies look for new pairs, so a resting pile costs nothing here;
     /// pairs end in the narrow phase when their fat boxes stop overlapping.
     /// </summary>
-    internal sealed class BroadPhase
+    internal sealed partial class BroadPhase
     {
         public readonly DynamicAabbTree StaticTree = new DynamicAabbTree();
         public readonly DynamicAabbTree MovingTree = new DynamicAabbTree();

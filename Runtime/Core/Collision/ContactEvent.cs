@@ -41,5 +41,16 @@ namespace Fulcrum.Collision
         public float NormalImpulse;
         /// <summary>Velocity of B relative to A at <see cref="Point"/> before the solve, m/s.</summary>
         public Vector3 RelativeVelocity;
+
+        /// <summary>The same event with its handles issued by world <paramref name="worldId"/> (a restored state's pending events).</summary>
+        internal readonly ContactEvent InWorld(int worldId)
+        {
+            ContactEvent e = this;
+            e.BodyA = new BodyHandle(BodyA.Index, BodyA.Generation, worldId);
+            e.BodyB = new BodyHandle(BodyB.Index, BodyB.Generation, worldId);
+            e.ShapeA = new ShapeHandle(ShapeA.Index, ShapeA.Generation, worldId);
+            e.ShapeB = new ShapeHandle(ShapeB.Index, ShapeB.Generation, worldId);
+            return e;
+        }
     }
 }

@@ -11,7 +11,7 @@ namespace Fulcrum.Collision
     /// per contact, and keep their accumulated impulses from one step to the next.
     /// Grows amortised; steady-state use allocates nothing.
     /// </summary>
-    internal sealed class ContactGraph
+    internal sealed partial class ContactGraph
     {
         /// <summary>The most manifolds one pair keeps (a convex shape against a mesh).</summary>
         public const int MaxManifoldsPerPair = 4;
@@ -23,7 +23,7 @@ namespace Fulcrum.Collision
 
         int _contactsUsed;
         int _contactFree = -1;             // free contacts chain through FirstManifold
-        readonly PairMap _map = new PairMap();
+        PairMap _map = new PairMap();
 
         // Edge e = 2 c + side (side 0: in ShapeA's list, 1: in ShapeB's list).
         int[] _edgeNext = new int[32];

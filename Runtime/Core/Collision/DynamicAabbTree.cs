@@ -13,7 +13,7 @@ namespace Fulcrum.Collision
     /// scenes", I3D 2012), keeping the tree balanced without a global rebuild.
     /// Proxy ids are node indices and stay valid until the proxy is destroyed.
     /// </summary>
-    internal sealed class DynamicAabbTree
+    internal sealed partial class DynamicAabbTree
     {
         TreeNode[] _nodes = new TreeNode[16];
         int _root = -1;

@@ -7,7 +7,7 @@ namespace Fulcrum.Collision
     /// load kept at or below one half, deletion by backward shifting (no tombstones), so
     /// lookups stay short however many pairs come and go. Grows by doubling, amortised.
     /// </summary>
-    internal sealed class PairMap
+    internal sealed partial class PairMap
     {
         const ulong Empty = ulong.MaxValue;
         ulong[] _keys;

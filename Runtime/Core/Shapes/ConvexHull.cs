@@ -62,6 +62,57 @@ namespace Fulcrum
             ComputeUnitMass(vertices, faces, out _volume, out _centroid, out _unitInertia);
         }
 
+        // A hull exactly as saved by WriteState (see World.SaveState).
+        ConvexHull(Vector3[] vertices, Vector3[] faceNormals, float[] faceOffsets, int[] faceStart, int[] faceVertices, int[] edgeVertices,
+            float volume, Vector3 centroid, Mat3 unitInertia)
+        {
+            Vertices = vertices;
+            FaceNormals = faceNormals;
+            FaceOffsets = faceOffsets;
+            FaceStart = faceStart;
+            FaceVertices = faceVertices;
+            EdgeVertices = edgeVertices;
+            _volume = volume;
+            _centroid = centroid;
+            _unitInertia = unitInertia;
+        }
+
+        /// <summary>Writes every array and the unit mass properties, so that a restored hull is the same hull bit for bit.</summary>
+        internal void WriteState(StateWriter w)
+        {
+            w.WriteArray(Vertices);
+            w.WriteArray(FaceNormals);
+            w.WriteArray(FaceOffsets);
+            w.WriteArray(FaceStart);
+            w.WriteArray(FaceVertices);
+            w.WriteArray(EdgeVertices);
+            w.Write(_volume);
+            w.Write(_centroid);
+            w.Write(_unitInertia);
+        }
+
+        /// <summary>Reads what <see cref="WriteState"/> wrote, checking every index.</summary>
+        internal static ConvexHull ReadState(StateReader r)
+        {
+            Vector3[] vertices = r.ReadArray<Vector3>("hull vertices");
+            Vector3[] normals = r.ReadArray<Vector3>("hull face normals");
+            float[] offsets = r.ReadArrayExactly<float>("hull face offsets", normals.Length);
+            int[] faceStart = r.ReadArrayExactly<int>("hull face starts", normals.Length + 1);
+            int[] faceVertices = r.ReadArray<int>("hull face vertices");
+            int[] edges = r.ReadArray<int>("hull edges");
+            float volume = r.Read<float>("hull volume");
+            Vector3 centroid = r.Read<Vector3>("hull centroid");
+            Mat3 inertia = r.Read<Mat3>("hull inertia");
+            if (vertices.Length < 4 || normals.Length < 4 || faceStart[0] != 0 || faceStart[normals.Length] != faceVertices.Length)
+                throw r.Error("a hull's faces do not match its vertex lists.");
+            for (int f = 0; f < normals.Length; f++)
+                if (faceStart[f + 1] - faceStart[f] < 3) throw r.Error($"hull face {f} has fewer than 3 vertices.");
+            foreach (int v in faceVertices) if ((uint)v >= (uint)vertices.Length) throw r.Error($"a hull face uses vertex {v} of {vertices.Length}.");
+            foreach (int v in edges) if ((uint)v >= (uint)vertices.Length) throw r.Error($"a hull edge uses vertex {v} of {vertices.Length}.");
+            if (edges.Length % 2 != 0) throw r.Error("a hull edge list has an odd length.");
+            return new ConvexHull(vertices, normals, offsets, faceStart, faceVertices, edges, volume, centroid, inertia);
+        }
+
         /// <summary>
         /// Builds the convex hull of a point cloud (shape frame, metres). Throws an
         /// <see cref="ArgumentException"/> naming "hull.points" when a point is not finite or

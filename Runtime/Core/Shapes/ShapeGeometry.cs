@@ -86,6 +86,37 @@ namespace Fulcrum
             return new ShapeGeometry(ShapeType.TriangleMesh, 0, 0, Vector3.Zero, Vector3.Zero, 0, mesh);
         }
 
+        /// <summary>Writes every field; <paramref name="dataIndex"/> names the hull or mesh in the state's table (-1 for none).</summary>
+        internal void WriteState(StateWriter w, int dataIndex)
+        {
+            w.Write(Type);
+            w.Write(Radius);
+            w.Write(HalfHeight);
+            w.Write(HalfExtents);
+            w.Write(Normal);
+            w.Write(Offset);
+            w.Write(dataIndex);
+        }
+
+        /// <summary>Reads what <see cref="WriteState"/> wrote; <paramref name="data"/> is the state's table of hulls and meshes.</summary>
+        internal static ShapeGeometry ReadState(StateReader r, object[] data)
+        {
+            var type = r.Read<ShapeType>("shape type");
+            float radius = r.Read<float>("shape radius"), halfHeight = r.Read<float>("shape half-height");
+            Vector3 halfExtents = r.Read<Vector3>("shape half-extents"), normal = r.Read<Vector3>("shape normal");
+            float offset = r.Read<float>("shape offset");
+            int index = r.Read<int>("shape data index");
+            if (type > ShapeType.TriangleMesh) throw r.Error($"unknown shape type {(int)type}.");
+            object? d = null;
+            if (type == ShapeType.ConvexHull || type == ShapeType.TriangleMesh)
+            {
+                if ((uint)index >= (uint)data.Length) throw r.Error($"a shape names data {index} of {data.Length}.");
+                d = data[index];
+                if (type == ShapeType.ConvexHull ? !(d is ConvexHull) : !(d is TriangleMesh)) throw r.Error($"a {type} shape names data of another kind.");
+            }
+            return new ShapeGeometry(type, radius, halfHeight, halfExtents, normal, offset, d);
+        }
+
         /// <summary>Geometry of another kind carrying its own data (hulls and meshes).</summary>
         internal static ShapeGeometry WithData(ShapeType type, object data, float radius = 0) =>
             new ShapeGeometry(type, radius, 0, Vector3.Zero, Vector3.Zero, 0, data);

@@ -8,7 +8,7 @@ namespace Fulcrum
     /// <see cref="BodyStorage"/>. A body's shapes form a singly linked list through
     /// <see cref="NextInBody"/>.
     /// </summary>
-    internal sealed class ShapeStorage
+    internal sealed partial class ShapeStorage
     {
         public ShapeGeometry[] Geometry = Array.Empty<ShapeGeometry>();
         public Pose[] LocalPose = Array.Empty<Pose>();
@@ -25,7 +25,7 @@ namespace Fulcrum
         public ulong[] UserData = Array.Empty<ulong>();
         public Aabb[] WorldAabb = Array.Empty<Aabb>();         // tight bounds at the current pose
         public int[] ProxyId = Array.Empty<int>();             // broad-phase proxy, -1 when none
-        readonly SlotAllocator _slots = new SlotAllocator();
+        SlotAllocator _slots = new SlotAllocator();
 
         /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
         public int[] Generation => _slots.Generation;

@@ -67,6 +67,22 @@ namespace Fulcrum
             return new TriangleMesh(vertices.ToArray(), triangles.ToArray(), normals);
         }
 
+        /// <summary>Writes the vertices and triangles; the normals and the hierarchy are rebuilt from them, deterministically.</summary>
+        internal void WriteState(StateWriter w)
+        {
+            w.WriteArray(Vertices);
+            w.WriteArray(Indices);
+        }
+
+        /// <summary>Reads what <see cref="WriteState"/> wrote, with the checks of <see cref="Create"/>.</summary>
+        internal static TriangleMesh ReadState(StateReader r)
+        {
+            Vector3[] vertices = r.ReadArray<Vector3>("mesh vertices");
+            int[] indices = r.ReadArray<int>("mesh triangles");
+            try { return Create(vertices, indices); }
+            catch (ArgumentException e) { throw r.Error(e.Message); }
+        }
+
         /// <summary>Number of triangles.</summary>
         public int TriangleCount => Normals.Length;
 

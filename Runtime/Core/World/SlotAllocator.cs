@@ -75,6 +75,46 @@ namespace Fulcrum
             if (Generation[slot] <= 0) Generation[slot] = 1;
         }
 
+        /// <summary>Writes the slots, generations, live list and free list (see <see cref="World.SaveState"/>).</summary>
+        public void Save(StateWriter w)
+        {
+            w.Write(Capacity);
+            w.Write(SlotCount);
+            w.Write(ActiveCount);
+            w.WriteArray(Generation, SlotCount);
+            w.WriteArray(ActiveIndex, SlotCount);
+            w.WriteArray(Active, ActiveCount);
+            w.WriteArray(_free, _freeCount);
+        }
+
+        /// <summary>Reads what <see cref="Save"/> wrote into a new allocator, checking every index.</summary>
+        public static SlotAllocator Load(StateReader r, string what)
+        {
+            var s = new SlotAllocator();
+            int capacity = r.Count(what + " capacity", Limits.MaxReserve * 2);
+            s.SlotCount = r.Count(what + " slot count", capacity);
+            s.ActiveCount = r.Count(what + " live count", s.SlotCount);
+            s.Capacity = capacity;
+            s.Generation = r.ReadArrayExactly<int>(what + " generations", s.SlotCount);
+            s.ActiveIndex = r.ReadArrayExactly<int>(what + " live positions", s.SlotCount);
+            s.Active = r.ReadArrayExactly<int>(what + " live slots", s.ActiveCount);
+            s._free = r.ReadArray<int>(what + " free slots");
+            s._freeCount = s._free.Length;
+            if (s._freeCount + s.ActiveCount != s.SlotCount) throw r.Error($"{what}: {s.ActiveCount} live and {s._freeCount} free slots do not add up to {s.SlotCount}.");
+            Array.Resize(ref s.Generation, capacity);
+            Array.Resize(ref s.ActiveIndex, capacity);
+            Array.Resize(ref s.Active, capacity);
+            for (int i = s.SlotCount; i < capacity; i++) s.ActiveIndex[i] = -1;
+            for (int k = 0; k < s.ActiveCount; k++)
+            {
+                int slot = s.Active[k];
+                if ((uint)slot >= (uint)s.SlotCount || s.ActiveIndex[slot] != k) throw r.Error($"{what}: live slot list entry {k} ({slot}) does not match its slot.");
+            }
+            for (int k = 0; k < s._freeCount; k++)
+                if ((uint)s._free[k] >= (uint)s.SlotCount || s.ActiveIndex[s._free[k]] != -1) throw r.Error($"{what}: free slot {s._free[k]} is live or out of range.");
+            return s;
+        }
+
         void Grow(int capacity)
         {
             Array.Resize(ref Generation, capacity);

@@ -8,8 +8,8 @@ namespace Fulcrum
     public sealed partial class World
     {
         // Collision state. The margin policy is written down in CollisionMargins.
-        internal readonly BroadPhase BroadPhase = new BroadPhase();
-        internal readonly ContactGraph ContactGraph = new ContactGraph();
+        internal BroadPhase BroadPhase = new BroadPhase();
+        internal ContactGraph ContactGraph = new ContactGraph();
         /// <summary>This step's manifolds for the solver (see <see cref="ContactSet"/>).</summary>
         internal readonly ContactSet Contacts = new ContactSet();
         readonly ContactBuffer _contactBuffer = new ContactBuffer();

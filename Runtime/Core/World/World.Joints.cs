@@ -8,7 +8,7 @@ namespace Fulcrum
 {
     public sealed partial class World
     {
-        internal readonly JointStorage Joints = new JointStorage();
+        internal JointStorage Joints = new JointStorage();
         JointBreakEvent[] _jointBreaks = new JointBreakEvent[4];
         int _jointBreakCount;
 

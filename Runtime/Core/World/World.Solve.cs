@@ -6,7 +6,7 @@ namespace Fulcrum
 {
     public sealed partial class World
     {
-        readonly IslandBuilder _islands = new IslandBuilder();
+        IslandBuilder _islands = new IslandBuilder();
         readonly SolverContext _solverContext = new SolverContext();
         readonly PgsSolver _pgs = new PgsSolver();
         readonly TgsSolver _tgs = new TgsSolver();

@@ -10,8 +10,8 @@ namespace Fulcrum
     /// </summary>
     public sealed partial class World
     {
-        internal readonly BodyStorage Bodies = new BodyStorage();
-        internal readonly ShapeStorage Shapes = new ShapeStorage();
+        internal BodyStorage Bodies = new BodyStorage();
+        internal ShapeStorage Shapes = new ShapeStorage();
 
         static int s_lastId;
 

@@ -55,6 +55,13 @@ namespace Fulcrum.Dynamics
             for (int i = old; i < n; i++) SleepNext[i] = -1;
         }
 
+        /// <summary>Takes the sleeping islands' rings of a restored state (a new builder only).</summary>
+        public void RestoreSleepRings(int[] sleepNext)
+        {
+            EnsureBodies(sleepNext.Length);
+            Array.Copy(sleepNext, SleepNext, sleepNext.Length);
+        }
+
         /// <summary>Sizes the step arrays for <paramref name="bodies"/> body slots, <paramref name="manifolds"/> manifolds and <paramref name="joints"/> joints.</summary>
         public void Reserve(int bodies, int manifolds, int joints)
         {

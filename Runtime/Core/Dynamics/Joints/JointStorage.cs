@@ -7,7 +7,7 @@ namespace Fulcrum.Dynamics
     /// slots, and for every body the list of its joints (two edges per joint, edge = 2 slot +
     /// side) so that removing a body finds its joints without a search.
     /// </summary>
-    internal sealed class JointStorage
+    internal sealed partial class JointStorage
     {
         public JointData[] Data = Array.Empty<JointData>();
         public string?[] Name = Array.Empty<string?>();
@@ -16,7 +16,7 @@ namespace Fulcrum.Dynamics
         /// <summary>First edge of each body slot's list, -1 for none.</summary>
         public int[] FirstEdge = Array.Empty<int>();
 
-        readonly SlotAllocator _slots = new SlotAllocator();
+        SlotAllocator _slots = new SlotAllocator();
 
         /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
         public int[] Generation => _slots.Generation;

@@ -1,0 +1,75 @@
+using System;
+using System.Numerics;
+
+namespace Fulcrum.SoftBodies
+{
+    public sealed partial class SoftBodySystem : IStateStage
+    {
+        static readonly Type[] StateTypes =
+        {
+            typeof(Vector2), typeof(TetElement), typeof(TetGradients), typeof(TriangleElement), typeof(BendElement),
+            typeof(Attachment), typeof(SoftPlasticity),
+        };
+
+        bool IStateStage.HasState => _slots.Count > 0;
+
+        Type[] IStateStage.LayoutTypes => StateTypes;
+
+        // The slots (live or not, with generations), the order bodies step in, each live body's
+        // state, and the divergence record.
+        void IStateStage.SaveState(StateWriter w)
+        {
+            w.Write(_slots.Count);
+            for (int i = 0; i < _slots.Count; i++)
+            {
+                w.Write(_generations[i]);
+                w.Write(_slots[i] != null);
+            }
+            w.Write(_active.Count);
+            foreach (SoftBody body in _active) w.Write(body.Slot);
+            foreach (SoftBody body in _active) body.WriteState(w);
+            w.Write(DivergenceCount);
+            w.Write(LastDiverged.Index);
+            w.Write(LastDiverged.Generation);
+            w.Write(LastDivergedStep);
+        }
+
+        Action IStateStage.PrepareRestore(StateReader r)
+        {
+            int slots = r.Read<int>("soft body slot count");
+            if (slots != _slots.Count)
+                throw r.Error($"the state has {slots} soft body slots, this world {_slots.Count}: build the same soft bodies before restoring.");
+            for (int i = 0; i < slots; i++)
+            {
+                int generation = r.Read<int>("soft body generation");
+                bool live = r.Read<bool>("soft body liveness");
+                if (generation != _generations[i] || live != (_slots[i] != null))
+                    throw r.Error($"soft body slot {i} is {(live ? "live" : "free")} at generation {generation} in the state and {(_slots[i] != null ? "live" : "free")} at {_generations[i]} here: build the same soft bodies before restoring.");
+            }
+            int count = r.Count("live soft body count", slots);
+            if (count != _active.Count) throw r.Error($"the state has {count} live soft bodies, this world {_active.Count}.");
+            var order = new SoftBody[count];
+            for (int k = 0; k < count; k++)
+            {
+                int slot = r.Read<int>("soft body slot");
+                if ((uint)slot >= (uint)slots || !(_slots[slot] is SoftBody body) || Array.IndexOf(order, body) >= 0)
+                    throw r.Error($"live soft body {k} names slot {slot}, which is not live here or is named twice.");
+                order[k] = body;
+            }
+            var commits = new Action[count];
+            for (int k = 0; k < count; k++) commits[k] = order[k].PrepareRestore(r);
+            int divergences = r.Read<int>("soft divergence count");
+            var last = new SoftBodyHandle(r.Read<int>("soft divergence slot"), r.Read<int>("soft divergence generation"), _world.Id);
+            long lastStep = r.Read<long>("soft divergence step");
+            return () =>
+            {
+                _active.Clear();
+                _active.AddRange(order);
+                foreach (Action commit in commits) commit();
+                DivergenceCount = divergences;
+                LastDiverged = last;
+                LastDivergedStep = lastStep;
+            };
+        }
+    }
+}
