@@ -94,7 +94,7 @@ namespace Fulcrum.SoftBodies
             int substeps = 1;
             for (int k = 0; k < _active.Count; k++) substeps = Math.Max(substeps, _active[k].SubstepsFor(dt));
             float h = dt / substeps;
-            _coupling.Begin(world.Bodies);
+            _coupling.Begin(world, dt, substeps);
             for (int k = 0; k < _active.Count; k++) _active[k].BeginStep(dt, _coupling);
             _softContacts.FindPairs(_active, world.Gravity.Length(), dt);
             for (int s = 0; s < substeps; s++)

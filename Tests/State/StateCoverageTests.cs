@@ -33,6 +33,7 @@ namespace Fulcrum.Tests.State
             "World._stepTouching", "World._stepMaxPenetration", "World._anyWoken", "World._contactBuffer", "World._pointCache",
             "World._narrowJob", "World._narrowSlot", "World._freeBodies", "World._reuseCosHalfAngle",
             "World._workers", "World._solverContext", "World._pgs", "World._tgs",
+            "World._stepConstrained", "World._solvedInStep",
             // Queries: their own scratch, and bounds refreshed lazily before the next query.
             "World._queryBuffer", "World._rayHits", "World._castHits", "World._overlaps", "World._queryBoundsStale",
             // Island building: only the sleeping rings (SleepNext) live across steps.

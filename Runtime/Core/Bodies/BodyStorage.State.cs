@@ -28,6 +28,8 @@ namespace Fulcrum
             w.WriteArray(GravityScale, n);
             w.WriteArray(PreviousPosition, n);
             w.WriteArray(PreviousRotation, n);
+            w.WriteArray(StartLinearVelocity, n);
+            w.WriteArray(StartAngularVelocity, n);
             w.WriteArray(Mass, n);
             w.WriteArray(InertiaLocal, n);
             w.WriteArray(MassOverride, n);
@@ -69,6 +71,8 @@ namespace Fulcrum
             b.GravityScale = r.ReadSlots<float>("body gravity scales", n, c);
             b.PreviousPosition = r.ReadSlots<System.Numerics.Vector3>("body previous positions", n, c);
             b.PreviousRotation = r.ReadSlots<System.Numerics.Quaternion>("body previous rotations", n, c);
+            b.StartLinearVelocity = r.ReadSlots<System.Numerics.Vector3>("body step-start linear velocities", n, c);
+            b.StartAngularVelocity = r.ReadSlots<System.Numerics.Vector3>("body step-start angular velocities", n, c);
             b.Mass = r.ReadSlots<float>("body masses", n, c);
             b.InertiaLocal = r.ReadSlots<Mathematics.Mat3>("body local inertias", n, c);
             b.MassOverride = r.ReadSlots<float>("body mass overrides", n, c);

@@ -35,6 +35,8 @@ namespace Fulcrum
         public float[] GravityScale = Array.Empty<float>();
         public Vector3[] PreviousPosition = Array.Empty<Vector3>();  // pose at the start of the last step, for interpolation
         public Quaternion[] PreviousRotation = Array.Empty<Quaternion>();
+        public Vector3[] StartLinearVelocity = Array.Empty<Vector3>();  // velocities at the start of the last step (before the solve),
+        public Vector3[] StartAngularVelocity = Array.Empty<Vector3>(); // from which the soft-body stage re-integrates the bodies it touches
 
         // Cold: touched on creation, edits and rare events.
         public float[] Mass = Array.Empty<float>();
@@ -104,6 +106,8 @@ namespace Fulcrum
             Array.Resize(ref GravityScale, capacity);
             Array.Resize(ref PreviousPosition, capacity);
             Array.Resize(ref PreviousRotation, capacity);
+            Array.Resize(ref StartLinearVelocity, capacity);
+            Array.Resize(ref StartAngularVelocity, capacity);
             Array.Resize(ref Mass, capacity);
             Array.Resize(ref InertiaLocal, capacity);
             Array.Resize(ref MassOverride, capacity);

@@ -38,6 +38,7 @@ namespace Fulcrum
             _islands.Reserve(slots, manifolds, Joints.ActiveCount);
             _solverContext.Reserve(slots, manifolds, Joints.ActiveCount);
             if (_freeBodies.Length < slots) _freeBodies = new int[slots];
+            if (_solvedInStep.Length < slots) Array.Resize(ref _solvedInStep, slots);
         }
 
         void ReserveSorting(int pairs)

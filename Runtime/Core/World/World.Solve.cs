@@ -48,6 +48,7 @@ namespace Fulcrum
         {
             IConstraintSolver solver = _settings.Solver == SolverType.Pgs ? _pgs : (IConstraintSolver)_tgs;
             bool constrained = _islands.ManifoldCount > 0 || _islands.JointCount > 0;
+            _stepConstrained = constrained;
             if (constrained)
             {
                 _solverContext.Pool = SolverThreads();
@@ -66,9 +67,25 @@ namespace Fulcrum
             Integrator.IntegratePositions(Bodies, _freeBodies, 0, free, dt);
 
             if (!constrained) return;
+            if (_solvedInStep.Length < Bodies.SlotCount) Array.Resize(ref _solvedInStep, Math.Max(Bodies.SlotCount, 2 * _solvedInStep.Length));
+            for (int k = 1; k < _solverContext.BodyCount; k++) _solvedInStep[_solverContext.BodySlot[k]] = _stepIndex + 1;
             StatMaxJointError = MathF.Max(StatMaxJointError, solver.Step(_solverContext, _islands, dt));
             CollectBrokenJoints();
         }
+
+        bool _stepConstrained;
+        // Per body slot: 1 + the index of the last step whose constraint solver moved it.
+        long[] _solvedInStep = Array.Empty<long>();
+
+        /// <summary>
+        /// How many integrator substeps moved body <paramref name="slot"/> in this step's solve:
+        /// the TGS substeps for a body the solver took, 1 for PGS and for a body in no
+        /// constraint (the plain integrator). Valid from the solve to the end of the step; the
+        /// soft-body stage uses it to tell the rigid solve's constraint corrections from its
+        /// integration.
+        /// </summary>
+        internal int IntegratorSubsteps(int slot) =>
+            _stepConstrained && _settings.Solver == SolverType.Tgs && slot < _solvedInStep.Length && _solvedInStep[slot] == _stepIndex + 1 ? _settings.Substeps : 1;
 
         // Sleep half of the last stage: rest timers, then resting islands fall asleep.
         void UpdateSleep(float dt)

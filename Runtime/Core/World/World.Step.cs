@@ -63,8 +63,9 @@ namespace Fulcrum
             return now;
         }
 
-        // Remembers the starting pose for render interpolation and turns kinematic targets
-        // into the velocities that reach them in this step.
+        // Remembers the starting pose for render interpolation (and the starting velocities for
+        // the soft-body stage) and turns kinematic targets into the velocities that reach them
+        // in this step.
         void BeginStep(float dt)
         {
             BodyStorage b = Bodies;
@@ -73,6 +74,8 @@ namespace Fulcrum
                 int i = b.Active[k];
                 b.PreviousPosition[i] = b.Position[i];
                 b.PreviousRotation[i] = b.Rotation[i];
+                b.StartLinearVelocity[i] = b.LinearVelocity[i];
+                b.StartAngularVelocity[i] = b.AngularVelocity[i];
                 if (b.Type[i] != BodyType.Kinematic) continue;
                 if (b.HasKinematicTarget[i])
                 {

@@ -5,14 +5,30 @@ using Fulcrum.Mathematics;
 namespace Fulcrum.SoftBodies
 {
     /// <summary>
-    /// The rigid bodies a soft body touches during the soft-body stage. The rigid solve has
-    /// already moved them over the whole step; here they are walked along that motion substep
-    /// by substep (centre linearly, rotation by slerp, from the start-of-step pose), so a
-    /// contact builds up as gradually as the soft body's own motion. XPBD corrections pushed
-    /// onto a dynamic body (a position impulse P at a point) move it by P/m and
-    /// I^-1 (r x P) and change its velocity by the same over h, exactly the momentum the
-    /// vertex loses; the velocity change also carries it on through the later substeps.
-    /// Writes body pose, velocity and world inertia in <see cref="BodyStorage"/>.
+    /// The rigid bodies a soft body touches during the soft-body stage, moved through the same
+    /// substeps as the soft body so that both sides of every contact and attachment see each
+    /// other in every iteration (one coupled solve, as in Mueller et al. 2020, "Detailed Rigid
+    /// Body Simulation with Extended Position Based Dynamics", where rigid bodies and particles
+    /// share the substep loop).
+    /// <para>
+    /// A dynamic body is put back at its pose and velocity from the start of the step and
+    /// integrated again substep by substep: v += a h, x += v h, with a = (v1 - v0) / dt the
+    /// acceleration the rigid solve gave it (gravity, damping, rigid contacts and joints: the
+    /// forces the soft body does not see are kept, applied at the substep rate), plus the
+    /// solve's position correction (its end pose minus where its own integrator would have
+    /// taken the body with that acceleration alone), spread evenly over the substeps. XPBD corrections pushed onto it (a position
+    /// impulse P at a point) move it by P/m and I^-1 (r x P) and change its velocity by the same
+    /// over h, exactly the momentum the vertex loses, and the next substep integrates on from
+    /// there. Before, the body was walked along the rigid solve's end-of-step path (which had
+    /// fallen a whole step under gravity without the soft body's support) and pushed back
+    /// afterwards: an explicit, staggered coupling that rocked a heavy plate on a soft cube
+    /// more every cycle until it slid off.
+    /// </para>
+    /// <para>
+    /// A kinematic body follows its prescribed motion: walked from its start pose to its end
+    /// pose (centre linearly, rotation by slerp). Writes body pose, velocity and world inertia
+    /// in <see cref="BodyStorage"/>.
+    /// </para>
     /// </summary>
     internal sealed class RigidCoupling
     {
@@ -23,16 +39,25 @@ namespace Fulcrum.SoftBodies
         Quaternion[] _startRotation = Array.Empty<Quaternion>();
         Vector3[] _endCenter = Array.Empty<Vector3>();
         Quaternion[] _endRotation = Array.Empty<Quaternion>();
-        Vector3[] _offset = Array.Empty<Vector3>();
-        Quaternion[] _rotationOffset = Array.Empty<Quaternion>();
-        Vector3[] _linearDrift = Array.Empty<Vector3>();
-        Vector3[] _angularDrift = Array.Empty<Vector3>();
+        // Dynamic bodies: the rigid solve's acceleration over the step, and its position
+        // correction per substep (linear, and as a rotation vector).
+        Vector3[] _acceleration = Array.Empty<Vector3>();
+        Vector3[] _angularAcceleration = Array.Empty<Vector3>();
+        Vector3[] _correction = Array.Empty<Vector3>();
+        Vector3[] _angularCorrection = Array.Empty<Vector3>();
         int _count;
+        float _dt;
+        int _substeps;
+        World _world = null!;
 
-        /// <summary>Forgets last step's bodies.</summary>
-        public void Begin(BodyStorage bodies)
+        /// <summary>Forgets last step's bodies; the coming step is <paramref name="dt"/> long in <paramref name="substeps"/> substeps.</summary>
+        public void Begin(World world, float dt, int substeps)
         {
+            _world = world;
+            BodyStorage bodies = world.Bodies;
             _bodies = bodies;
+            _dt = dt;
+            _substeps = substeps;
             if (_entryOfSlot.Length < bodies.SlotCount)
             {
                 int old = _entryOfSlot.Length;
@@ -56,23 +81,62 @@ namespace Fulcrum.SoftBodies
             _startCenter[e] = b.PreviousPosition[slot] + Vector3.Transform(b.LocalCenter[slot], b.PreviousRotation[slot]);
             _endCenter[e] = b.Center[slot];
             _endRotation[e] = b.Rotation[slot];
-            _offset[e] = Vector3.Zero;
-            _rotationOffset[e] = Quaternion.Identity;
-            _linearDrift[e] = Vector3.Zero;
-            _angularDrift[e] = Vector3.Zero;
+            if (b.Type[slot] != BodyType.Dynamic) return;
+
+            // Back to the start of the step; BeginSubstep integrates it again.
+            Vector3 v0 = b.StartLinearVelocity[slot], w0 = b.StartAngularVelocity[slot];
+            Vector3 v1 = b.LinearVelocity[slot], w1 = b.AngularVelocity[slot];
+            float invDt = 1f / _dt, invN = 1f / _substeps;
+            _acceleration[e] = (v1 - v0) * invDt;
+            _angularAcceleration[e] = (w1 - w0) * invDt;
+            // Where the rigid solver's own integrator (n substeps of v += a h, x += v h) takes the
+            // body with that acceleration and no constraint: what it did beyond that is the
+            // position correction of its contacts and joints (zero for a body in free flight).
+            int n = _world.IntegratorSubsteps(slot);
+            float hr = _dt / n;
+            Vector3 center = _startCenter[e], v = v0, w = w0;
+            Quaternion rotation = _startRotation[e];
+            for (int k = 0; k < n; k++)
+            {
+                v += _acceleration[e] * hr;
+                w += _angularAcceleration[e] * hr;
+                center += v * hr;
+                rotation = Rotation.Integrate(rotation, w, hr);
+            }
+            _correction[e] = (_endCenter[e] - center) * invN;
+            _angularCorrection[e] = Rotation.ToRotationVector(_endRotation[e] * Quaternion.Conjugate(rotation)) * invN;
+            b.Center[slot] = _startCenter[e];
+            b.Rotation[slot] = _startRotation[e];
+            b.LinearVelocity[slot] = v0;
+            b.AngularVelocity[slot] = w0;
+            b.SyncOriginFromCenter(slot);
+            b.UpdateWorldInertia(slot);
         }
 
-        /// <summary>Puts every tracked body where it is at fraction <paramref name="t"/> of the step (plus what the soft bodies did to it).</summary>
+        /// <summary>
+        /// Advances every tracked body to fraction <paramref name="t"/> of the step: a dynamic body
+        /// by one substep of <paramref name="h"/> (velocity, then position, from where the soft
+        /// bodies left it), a kinematic one along its prescribed path.
+        /// </summary>
         public void BeginSubstep(float t, float h)
         {
             BodyStorage b = _bodies;
             for (int e = 0; e < _count; e++)
             {
                 int slot = _slot[e];
-                _offset[e] += _linearDrift[e] * h;
-                _rotationOffset[e] = Rotation.Integrate(_rotationOffset[e], _angularDrift[e], h);
-                b.Center[slot] = Vector3.Lerp(_startCenter[e], _endCenter[e], t) + _offset[e];
-                b.Rotation[slot] = Quaternion.Normalize(_rotationOffset[e] * Quaternion.Slerp(_startRotation[e], _endRotation[e], t));
+                if (b.Type[slot] == BodyType.Dynamic)
+                {
+                    b.LinearVelocity[slot] += _acceleration[e] * h;
+                    b.AngularVelocity[slot] += _angularAcceleration[e] * h;
+                    b.Center[slot] += b.LinearVelocity[slot] * h + _correction[e];
+                    b.Rotation[slot] = Quaternion.Normalize(Rotation.FromRotationVector(_angularCorrection[e])
+                        * Rotation.Integrate(b.Rotation[slot], b.AngularVelocity[slot], h));
+                }
+                else
+                {
+                    b.Center[slot] = Vector3.Lerp(_startCenter[e], _endCenter[e], t);
+                    b.Rotation[slot] = Quaternion.Normalize(Quaternion.Slerp(_startRotation[e], _endRotation[e], t));
+                }
                 b.SyncOriginFromCenter(slot);
                 b.UpdateWorldInertia(slot);
             }
@@ -108,11 +172,7 @@ namespace Fulcrum.SoftBodies
             Vector3 dx = impulse * b.InverseMass[slot];
             Vector3 dTheta = b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], impulse);
             float invH = 1f / h;
-            _offset[e] += dx;
             Quaternion dq = Rotation.FromRotationVector(dTheta);
-            _rotationOffset[e] = Quaternion.Normalize(dq * _rotationOffset[e]);
-            _linearDrift[e] += dx * invH;
-            _angularDrift[e] += dTheta * invH;
             b.Center[slot] += dx;
             b.Rotation[slot] = Quaternion.Normalize(dq * b.Rotation[slot]);
             b.LinearVelocity[slot] += dx * invH;
@@ -120,6 +180,7 @@ namespace Fulcrum.SoftBodies
             b.SyncOriginFromCenter(slot);
             b.UpdateWorldInertia(slot);
             b.Awake[slot] = true;
+            b.SleepTime[slot] = 0; // soft bodies never sleep: what they push stays awake with them (asleep it would lose its weight and be pushed up)
         }
 
         /// <summary>
@@ -134,11 +195,10 @@ namespace Fulcrum.SoftBodies
             if (e < 0) return;
             Vector3 dv = impulse * b.InverseMass[slot];
             Vector3 dw = b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], impulse);
-            _linearDrift[e] += dv;
-            _angularDrift[e] += dw;
             b.LinearVelocity[slot] += dv;
             b.AngularVelocity[slot] += dw;
             b.Awake[slot] = true;
+            b.SleepTime[slot] = 0; // soft bodies never sleep: what they push stays awake with them (asleep it would lose its weight and be pushed up)
         }
 
         void Grow(int capacity)
@@ -148,10 +208,10 @@ namespace Fulcrum.SoftBodies
             Array.Resize(ref _startRotation, capacity);
             Array.Resize(ref _endCenter, capacity);
             Array.Resize(ref _endRotation, capacity);
-            Array.Resize(ref _offset, capacity);
-            Array.Resize(ref _rotationOffset, capacity);
-            Array.Resize(ref _linearDrift, capacity);
-            Array.Resize(ref _angularDrift, capacity);
+            Array.Resize(ref _acceleration, capacity);
+            Array.Resize(ref _angularAcceleration, capacity);
+            Array.Resize(ref _correction, capacity);
+            Array.Resize(ref _angularCorrection, capacity);
         }
     }
 }

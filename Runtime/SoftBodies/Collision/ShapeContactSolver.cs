@@ -78,6 +78,19 @@ namespace Fulcrum.SoftBodies
             }
         }
 
+        /// <summary>The largest mass of a dynamic body among the gathered shapes' owners, kg (0 for none).</summary>
+        public float HeaviestBody(World world)
+        {
+            float heaviest = 0;
+            BodyStorage b = world.Bodies;
+            for (int k = 0; k < _count; k++)
+            {
+                int owner = world.Shapes.Body[_shapes[k]];
+                if (b.Type[owner] == BodyType.Dynamic) heaviest = MathF.Max(heaviest, b.Mass[owner]);
+            }
+            return heaviest;
+        }
+
         /// <summary>Starts a substep: no vertex has been pushed or held yet.</summary>
         public void BeginSubstep(int vertexCount)
         {

@@ -52,6 +52,20 @@ namespace Fulcrum.SoftBodies
             }
         }
 
+        /// <summary>The largest mass of a live dynamic body with vertices attached, kg (0 for none).</summary>
+        public static float HeaviestBody(World world, Attachment[] attachments)
+        {
+            BodyStorage b = world.Bodies;
+            float heaviest = 0;
+            for (int k = 0; k < attachments.Length; k++)
+            {
+                int slot = attachments[k].BodySlot;
+                if (b.Generation[slot] == attachments[k].BodyGeneration && b.ActiveIndex[slot] >= 0 && b.Type[slot] == BodyType.Dynamic)
+                    heaviest = System.MathF.Max(heaviest, b.Mass[slot]);
+            }
+            return heaviest;
+        }
+
         /// <summary>Tracks every live body that has vertices attached.</summary>
         public static void Track(World world, Attachment[] attachments, RigidCoupling coupling)
         {

@@ -1,0 +1,183 @@
+using System;
+using System.Numerics;
+using Fulcrum.SoftBodies;
+using NUnit.Framework;
+
+namespace Fulcrum.Tests.SoftScenes
+{
+    /// <summary>
+    /// Heavy rigid bodies on soft ones (issue 12): a plate 10 to 1000 times heavier than the soft
+    /// cube under it settles at the closed-form Neo-Hookean uniaxial compression for E from 1e4
+    /// to 1e8 Pa, without inverting an element, and comes to rest; a guided plate reaches 35 %
+    /// strain; a 1000 kg crate dropped on a light slab never reaches the floor. Before 0.4 the
+    /// soft stage walked the rigid body along a path that never saw the soft body (2000 kg on an
+    /// E = 1e7 Pa cube reached the floor; see Documentation~/SoftSolvers.md).
+    /// </summary>
+    public class HeavyOnSoftTests
+    {
+        const float Width = 0.2f, Radius = 0.005f;
+
+        internal struct PlateRun
+        {
+            public float Strain, Expected, MinJ, LateTilt, LateSpeed, EnergyGrowth;
+        }
+
+        // The stable Neo-Hookean first Piola stress P_xx of F = diag(a, b, b), with b such that
+        // the lateral stress is zero (UniaxialTests.LateralStretch), in energy Lame parameters.
+        static double AxialStress(in NeoHookeanMaterial m, double a)
+        {
+            LameParameters lame = m.EnergyLame;
+            double mu = lame.Mu, lambda = lame.Lambda, alpha = 1 + 0.75 * mu / lambda;
+            double b = SoftBodies.UniaxialTests.LateralStretch(MaterialModel.StableNeoHookean, m, a);
+            return mu * a * (1 - 1 / (a * a + 2 * b * b + 1)) + lambda * (a * b * b - alpha) * b * b;
+        }
+
+        /// <summary>The compressive strain 1 - a at which the nominal stress is -<paramref name="stress"/> (Pa), by bisection.</summary>
+        internal static double UniaxialStrain(in NeoHookeanMaterial m, double stress)
+        {
+            double lo = 0.05, hi = 1;
+            for (int i = 0; i < 200; i++)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (AxialStress(m, mid) < -stress) lo = mid; else hi = mid;
+            }
+            return 1 - 0.5 * (lo + hi);
+        }
+
+        /// <summary>
+        /// A plate three times wider than a 0.2 m soft cube (4 x 4 x 4 cells, nu = 0.3, friction
+        /// 0.5 everywhere) on the ground, heavy enough to compress it by <paramref name="strain"/>
+        /// (closed form), <paramref name="ratio"/> times the cube's mass (the density follows);
+        /// optionally guided vertically by a prismatic joint; optionally tilted at the start.
+        /// Measures the cube's height between its top and bottom centre over the run.
+        /// </summary>
+        internal static PlateRun RunPlate(float youngs, float ratio, float strain, int steps, bool guided = false, float tiltDeg = 0)
+        {
+            var probe = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, 0.3f, 1000f);
+            float area = Width * Width;
+            float plateMass = (float)(-AxialStress(probe, 1 - strain) * area / 9.81);
+            var material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, 0.3f, plateMass / (ratio * area * Width));
+
+            var w = new World();
+            w.AddShape(w.CreateBody(BodyDef.Static(new Vector3(0, -0.5f, 0))), ShapeDef.Of(ShapeGeometry.Box(new Vector3(3, 0.5f, 3))));
+            SoftBodyDef def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(Width), 4, 4, 4), material, new Vector3(0, Width / 2 + Radius, 0));
+            def.Probes = new[] { new Vector3(0, Width / 2, 0), new Vector3(0, -Width / 2, 0) };
+            SoftBody cube = w.GetSoftBody(w.CreateSoftBody(def));
+            BodyDef plateDef = BodyDef.Dynamic(new Vector3(0, Width + 2 * Radius + 0.02f + 0.005f, 0));
+            plateDef.Mass = plateMass;
+            plateDef.Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, tiltDeg * MathF.PI / 180);
+            BodyHandle plate = w.CreateBody(plateDef);
+            w.AddShape(plate, ShapeDef.Of(ShapeGeometry.Box(new Vector3(1.5f * Width, 0.02f, 1.5f * Width))));
+            if (guided) w.CreateJoint(JointDef.Prismatic(plate, BodyHandle.None, Vector3.Zero, w.GetBody(plate).Position, Vector3.UnitY));
+
+            // Closed form at the mean load over the cube's height: the plate plus half the cube.
+            double expected = UniaxialStrain(material, (plateMass + 0.5 * cube.TotalMass) * 9.81 / area);
+            var run = new PlateRun { Expected = (float)expected, MinJ = 1 };
+            var j = new float[cube.ElementCount];
+            float startEnergy = Energy(w, plate, cube), highest = startEnergy;
+            for (int n = 0; n < steps; n++)
+            {
+                w.Step(1 / 60f);
+                cube.ComputeElementJ(j);
+                foreach (float x in j) run.MinJ = MathF.Min(run.MinJ, x);
+                highest = MathF.Max(highest, Energy(w, plate, cube));
+                if (n < 3 * steps / 4) continue;
+                Vector3 up = Vector3.Transform(Vector3.UnitY, w.GetBody(plate).Rotation);
+                run.LateTilt = MathF.Max(run.LateTilt, MathF.Acos(Math.Clamp(up.Y, -1f, 1f)) * 180 / MathF.PI);
+                run.LateSpeed = MathF.Max(run.LateSpeed, w.GetBody(plate).LinearVelocity.Length());
+            }
+            run.Strain = 1 - (cube.GetProbe(0) - cube.GetProbe(1)).Length() / Width;
+            run.EnergyGrowth = (highest - startEnergy) / MathF.Max(1e-9f, plateMass * 9.81f * Width * strain);
+            return run;
+        }
+
+        // Kinetic plus gravitational energy of plate and cube, plus the cube's strain energy, J.
+        static float Energy(World w, BodyHandle plate, SoftBody cube)
+        {
+            BodyRef p = w.GetBody(plate);
+            SoftBodyStats s = cube.ComputeStats();
+            float potential = 0;
+            for (int i = 0; i < cube.VertexCount; i++) potential += cube.Masses[i] * 9.81f * cube.Positions[i].Y;
+            return 0.5f * p.Mass * p.LinearVelocity.LengthSquared() + 0.5f * Vector3.Dot(p.AngularVelocity, w.WorldInertia(plate.Index) * p.AngularVelocity)
+                + p.Mass * 9.81f * p.Position.Y + s.KineticEnergy + s.StrainEnergy + potential;
+        }
+
+        [Test]
+        public void A_plate_10_to_1000_times_heavier_settles_at_the_uniaxial_closed_form(
+            [Values(1e4f, 1e6f, 1e8f)] float youngs, [Values(10f, 1000f)] float ratio, [Values(0.01f, 0.05f, 0.10f)] float strain)
+        {
+            PlateRun r = RunPlate(youngs, ratio, strain, 360);
+            TestContext.Out.WriteLine($"E {youngs:G} ratio {ratio} strain {r.Strain:F4} closed form {r.Expected:F4} ({100 * (r.Strain / r.Expected - 1):F1} %), min J {r.MinJ:F3}, late tilt {r.LateTilt:F2} deg, late speed {r.LateSpeed:F4} m/s");
+            // The friction (0.5) that holds the faces makes the cube stiffer than the free-faced
+            // closed form: the strains are 2-5.5 % under it. Not solver error: at 10 % strain a
+            // run at 30 substeps x 4 iterations is as far under (-4.8 %), friction 0.2 halves it.
+            Assert.That(r.Strain, Is.EqualTo(r.Expected).Within(0.06f * r.Expected), "strain against the Neo-Hookean uniaxial closed form");
+            Assert.That(r.MinJ, Is.GreaterThan(0.5f), "no element inverts or collapses");
+            Assert.That(r.LateTilt, Is.LessThan(2f), "the plate stays level");
+            Assert.That(r.LateSpeed, Is.LessThan(0.01f), "the plate is at rest");
+        }
+
+        [TestCase(0.20f)]
+        [TestCase(0.30f)]
+        [TestCase(0.35f)]
+        public void A_guided_plate_compresses_the_cube_to_the_closed_form_at_large_strains(float strain)
+        {
+            PlateRun r = RunPlate(1e5f, 100, strain, 360, guided: true);
+            TestContext.Out.WriteLine($"guided, strain {r.Strain:F4} closed form {r.Expected:F4} ({100 * (r.Strain / r.Expected - 1):F1} %), min J {r.MinJ:F3}, late speed {r.LateSpeed:F4} m/s");
+            Assert.That(r.Strain, Is.EqualTo(r.Expected).Within(0.06f * r.Expected));
+            Assert.That(r.MinJ, Is.GreaterThan(0.05f), "no element inverts (the corner tets reach J = 0.10 at 35 %)");
+            Assert.That(r.LateSpeed, Is.LessThan(0.1f), "settling (at 30-35 % the last quarter still moves at 4-5 cm/s)");
+        }
+
+        [Test]
+        public void A_tilted_heavy_plate_levels_out_and_the_energy_never_grows()
+        {
+            PlateRun r = RunPlate(1e6f, 100, 0.05f, 360, tiltDeg: 3f);
+            TestContext.Out.WriteLine($"tilted start: late tilt {r.LateTilt:F2} deg, strain {r.Strain:F4} (closed form {r.Expected:F4}), energy growth {r.EnergyGrowth:E2} of the load's work");
+            Assert.That(r.LateTilt, Is.LessThan(1f), "a 3 degree tilt decays");
+            Assert.That(r.EnergyGrowth, Is.LessThan(0.02f), "the energy never rises above its start");
+            Assert.That(r.Strain, Is.EqualTo(r.Expected).Within(0.06f * r.Expected));
+        }
+
+        [Test]
+        public void Scene_plate_on_soft_cube_holds_2000_kg_on_a_stiff_cube_at_the_closed_form()
+        {
+            SoftSceneRun run = SoftSceneRun.Load("plate-on-soft-cube");
+            float minJ = 1;
+            var j = new float[run.Body.ElementCount];
+            for (int n = 0; n < run.StepsIn(5f); n++)
+            {
+                run.Step();
+                run.Body.ComputeElementJ(j);
+                foreach (float x in j) minJ = MathF.Min(minJ, x);
+            }
+            float strain = 1 - (run.Body.GetProbe(0) - run.Body.GetProbe(1)).Length() / Width;
+            double expected = UniaxialStrain(run.Body.Material, (2000 + 0.5 * run.Body.TotalMass) * 9.81 / (Width * Width));
+            TestContext.Out.WriteLine($"plate-on-soft-cube: strain {strain:F4}, closed form {expected:F4}, min J {minJ:F3}, plate speed {run.World.GetBody(run.Scene.GetBody("plate")).LinearVelocity.Length():F4} m/s");
+            Assert.That(strain, Is.EqualTo(expected).Within(0.06 * expected));
+            Assert.That(minJ, Is.GreaterThan(0.5f));
+            Assert.That(run.World.GetBody(run.Scene.GetBody("plate")).LinearVelocity.Length(), Is.LessThan(0.01f));
+        }
+
+        [Test]
+        public void Scene_crate_on_slab_a_1000_kg_crate_dropped_on_a_43_kg_slab_never_reaches_the_floor()
+        {
+            SoftSceneRun run = SoftSceneRun.Load("crate-on-slab");
+            BodyHandle crate = run.Scene.GetBody("crate");
+            float lowest = float.MaxValue, minJ = 1;
+            var j = new float[run.Body.ElementCount];
+            for (int n = 0; n < run.StepsIn(5f); n++)
+            {
+                run.Step();
+                lowest = MathF.Min(lowest, run.World.GetBody(crate).Position.Y - 0.25f);
+                run.Body.ComputeElementJ(j);
+                foreach (float x in j) minJ = MathF.Min(minJ, x);
+            }
+            TestContext.Out.WriteLine($"crate-on-slab: lowest crate bottom {lowest:F4} m (slab 0.3 m thick, floor at 0), min J {minJ:F3}, end speed {run.World.GetBody(crate).LinearVelocity.Length():F4} m/s");
+            Assert.That(run.AllFinite(), Is.True);
+            Assert.That(lowest, Is.GreaterThan(0.15f), "the crate stops in the upper half of the slab");
+            Assert.That(minJ, Is.GreaterThan(0.5f), "no element inverts");
+            Assert.That(run.World.GetBody(crate).LinearVelocity.Length(), Is.LessThan(0.03f), "at rest on the slab");
+        }
+    }
+}
