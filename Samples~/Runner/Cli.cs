@@ -61,7 +61,7 @@ public static class Cli
                     output.WriteLine(Usage);
                     return ExitOk;
                 default:
-                    throw new UsageException($"unknown command '{args[0]}' (expected run, sweep, check, fuzz or view; 'fulcrum help' lists them)");
+                    throw new UsageException($"unknown command '{args[0]}' (expected run, sweep, check or fuzz; 'fulcrum help' lists them)");
             }
         }
         catch (UsageException e)
