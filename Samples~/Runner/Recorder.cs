@@ -14,8 +14,8 @@ namespace Fulcrum.Runner;
 /// Writes a world to a <c>.frec</c> recording for the browser viewer
 /// (Documentation~/RecordingFormat.md): the constructor writes the header (bodies, shapes
 /// with their geometry, joints, soft-body meshes) and <see cref="Record"/> appends one frame
-/// (poses, sleeping flags, contact points, joint frames and errors, soft-body vertices and
-/// element J, the step's stage times, energies).
+/// (poses, sleeping flags, contact points, joint frames and errors, soft-body vertices,
+/// element J and strain, the step's stage times, energies).
 /// <para>
 /// What exists when the recorder is created is what is recorded: bodies, joints and soft
 /// bodies created later are not in the header and are left out of the frames (a removed
@@ -41,6 +41,8 @@ public sealed class Recorder : IDisposable
     readonly int[] _jointGenerations;
     readonly SoftBody[] _softBodies;
     readonly float[][] _elementJ;     // per soft body, reused every frame
+    readonly float[][] _elementStrain;
+    readonly ElementStrain[] _strain;
     byte[] _buffer = new byte[1 << 16];
     int _length;
     long _ticks;
@@ -85,10 +87,14 @@ public sealed class Recorder : IDisposable
         SoftBodySystem? soft = SoftBodySystem.Of(world);
         _softBodies = new SoftBody[soft?.Count ?? 0];
         _elementJ = new float[_softBodies.Length][];
+        _elementStrain = new float[_softBodies.Length][];
+        _strain = new ElementStrain[_softBodies.Length];
         for (int k = 0; k < _softBodies.Length; k++)
         {
             _softBodies[k] = soft![k];
             _elementJ[k] = new float[_softBodies[k].ElementCount];
+            _elementStrain[k] = new float[_softBodies[k].ElementCount];
+            _strain[k] = new ElementStrain(_softBodies[k].Mesh);
         }
 
         WriteHeader(timestep, bodyNames);
@@ -311,9 +317,14 @@ public sealed class Recorder : IDisposable
         {
             SoftBody sb = _softBodies[k];
             foreach (Vector3 x in sb.Positions) V3(x);
-            float[] jOfElement = _elementJ[k];
-            if (!sb.IsDestroyed) sb.ComputeElementJ(jOfElement);
+            float[] jOfElement = _elementJ[k], strain = _elementStrain[k];
+            if (!sb.IsDestroyed)
+            {
+                sb.ComputeElementJ(jOfElement);
+                _strain[k].Compute(sb.Positions, strain);
+            }
             foreach (float value in jOfElement) F32(value);
+            foreach (float value in strain) F32(value);
         }
     }
 

@@ -64,6 +64,8 @@ public sealed class Recording
         public Vector3[][] SoftPositions = Array.Empty<Vector3[]>();
         /// <summary>Per soft body: J of each element.</summary>
         public float[][] SoftElementJ = Array.Empty<float[]>();
+        /// <summary>Per soft body: ‖E‖ (Green–Lagrange strain against the rest mesh) of each element.</summary>
+        public float[][] SoftElementStrain = Array.Empty<float[]>();
     }
 
     /// <summary>The layout version of the file.</summary>
@@ -179,6 +181,7 @@ public sealed class Recording
             f.Joints[i] = new JointState(r.V3(), r.V3(), r.Q(), r.Q(), r.F32(), r.F32(), (r.U8() & RecordingFormat.JointBroken) != 0);
         f.SoftPositions = new Vector3[rec.SoftBodies.Count][];
         f.SoftElementJ = new float[rec.SoftBodies.Count][];
+        f.SoftElementStrain = new float[rec.SoftBodies.Count][];
         for (int s = 0; s < rec.SoftBodies.Count; s++)
         {
             SoftBody sb = rec.SoftBodies[s];
@@ -186,6 +189,8 @@ public sealed class Recording
             for (int v = 0; v < sb.VertexCount; v++) f.SoftPositions[s][v] = r.V3();
             f.SoftElementJ[s] = new float[sb.Elements.Length / sb.VerticesPerElement];
             for (int e = 0; e < f.SoftElementJ[s].Length; e++) f.SoftElementJ[s][e] = r.F32();
+            f.SoftElementStrain[s] = new float[f.SoftElementJ[s].Length];
+            for (int e = 0; e < f.SoftElementStrain[s].Length; e++) f.SoftElementStrain[s][e] = r.F32();
         }
         return f;
     }

@@ -102,8 +102,29 @@ namespace Fulcrum.Tests.Viewer
             var j = new float[soft.ElementCount];
             soft.ComputeElementJ(j);
             Assert.That(last.SoftElementJ[0], Is.EqualTo(j));
+            Assert.That(rec.Frames[0].SoftElementStrain[0], Has.All.LessThan(1e-5f), "no strain at rest");
+            Assert.That(last.SoftElementStrain[0], Has.Length.EqualTo(soft.ElementCount));
             Assert.That(last.SoftEnergy, Is.GreaterThan(0f));
             Assert.That(rec.Frames[0].Positions[4].Y, Is.EqualTo(1.6f), "frame 0 is the state before the first step");
+        }
+
+        [Test]
+        public void Element_strain_of_a_10_percent_stretch_is_0_105_in_every_element_of_tets_and_shells()
+        {
+            foreach (SoftMesh mesh in new[] { SoftMesh.Box(new Vector3(1, 0.5f, 0.7f), 3, 2, 2), SoftMesh.Cloth(1, 1, 3, 3) })
+            {
+                var strain = new Runner.ElementStrain(mesh);
+                Vector3[] x = mesh.Vertices.ToArray();
+                var rotation = Quaternion.CreateFromYawPitchRoll(0.3f, 0.2f, 0.1f);
+                for (int i = 0; i < x.Length; i++) x[i] = Vector3.Transform(new Vector3(1.1f * x[i].X, x[i].Y, x[i].Z), rotation) + new Vector3(5, 0, 0);
+                int elements = mesh.IsShell ? mesh.TriangleCount : mesh.TetrahedronCount;
+                var e = new float[elements];
+                strain.Compute(x, e);
+                // E_xx = (1.1^2 - 1) / 2, the other components 0; a rotation and a shift change nothing.
+                Assert.That(e, Has.All.EqualTo(0.105f).Within(1e-4f), mesh.IsShell ? "shell" : "tets");
+                strain.Compute(mesh.Vertices, e);
+                Assert.That(e, Has.All.EqualTo(0f).Within(1e-6f));
+            }
         }
 
         [Test]
