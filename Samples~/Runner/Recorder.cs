@@ -260,8 +260,10 @@ public sealed class Recorder : IDisposable
         foreach (SoftBody sb in _softBodies)
             if (!sb.IsDestroyed)
             {
+                // Strain, kinetic and gravitational potential (from the origin, as Energy.Potential
+                // does for rigid bodies), so that a settling soft body does not look like a gain.
                 SoftBodyStats stats = sb.ComputeStats();
-                softEnergy += stats.StrainEnergy + stats.KineticEnergy;
+                softEnergy += stats.StrainEnergy + stats.KineticEnergy - sb.TotalMass * sb.GravityScale * Vector3.Dot(w.Gravity, stats.Centroid);
             }
         F32(softEnergy);
 

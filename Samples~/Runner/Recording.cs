@@ -48,7 +48,7 @@ public sealed class Recording
         public double Time;
         /// <summary>Stage times of the step, ms, in <see cref="StepStage"/> order, then the total.</summary>
         public float[] Profile = Array.Empty<float>();
-        /// <summary>Kinetic, potential (rigid bodies) and soft-body (strain + kinetic) energy, J.</summary>
+        /// <summary>Kinetic, potential (rigid bodies) and soft-body (strain + kinetic + potential) energy, J.</summary>
         public float Kinetic, Potential, SoftEnergy;
         /// <summary>Body poses in header order.</summary>
         public Vector3[] Positions = Array.Empty<Vector3>();

@@ -33,7 +33,7 @@ static class ViewCommand
         string dist = FindViewer(a.String("--viewer"));
 
         HttpListener listener = Listen(port, out int bound);
-        string url = $"http://127.0.0.1:{bound}/" + (file != null ? "?file=" + Uri.EscapeDataString(RecordingPath.TrimStart('/')) : "");
+        string url = $"http://127.0.0.1:{bound}/" + (file != null ? "?file=" + Uri.EscapeDataString(RecordingPath.TrimStart('/')) + "&name=" + Uri.EscapeDataString(Path.GetFileName(file)) : "");
         output.WriteLine($"viewer: {dist}");
         if (file != null) output.WriteLine($"recording: {file}");
         output.WriteLine($"serving {url}  (Ctrl+C to stop)");

@@ -118,7 +118,7 @@ namespace Fulcrum.Tests.Viewer
                 Assert.That(served, Is.EqualTo(File.ReadAllBytes(rec)));
                 Assert.That((int)(await http.GetAsync("/../secret.txt")).StatusCode, Is.EqualTo(404));
                 Assert.That((int)(await http.GetAsync("/%2e%2e/secret.txt")).StatusCode, Is.EqualTo(404));
-                Assert.That(output.ToString(), Does.Contain($"serving http://127.0.0.1:{port}/?file=recording.frec"));
+                Assert.That(output.ToString(), Does.Contain($"serving http://127.0.0.1:{port}/?file=recording.frec&name=tower.frec"));
             }
             finally
             {
