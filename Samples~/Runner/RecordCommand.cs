@@ -6,7 +6,7 @@ namespace Fulcrum.Runner;
 
 /// <summary>
 /// <c>fulcrum run SCENE.json --record OUT.frec</c>: the run command's recording for the
-/// browser viewer (Documentation~/RecordingFormat.md, Documentation~/Viewer.md). Kept apart
+/// browser viewer (Documentation~/RecordingFormat.md, Documentation~/Runner.md). Kept apart
 /// from <see cref="RunCommand"/>, which only opens it and passes <see cref="Session.AfterStep"/>
 /// to the run loop.
 /// </summary>
