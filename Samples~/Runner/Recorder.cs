@@ -344,7 +344,14 @@ public sealed class Recorder : IDisposable
         frame = Quaternion.Normalize(r * localFrame);
     }
 
-    int BodyIndex(int slot) => slot >= 0 && slot < _bodyIndexOfSlot.Length ? _bodyIndexOfSlot[slot] : -1;
+    // -1 for the world, for a body created after the header, and for one that reuses the
+    // slot of a recorded body that was removed (its generation differs).
+    int BodyIndex(int slot)
+    {
+        if (slot < 0 || slot >= _bodyIndexOfSlot.Length) return -1;
+        int k = _bodyIndexOfSlot[slot];
+        return k >= 0 && _world.Bodies.Generation[slot] == _bodyGenerations[k] ? k : -1;
+    }
 
     void Flush()
     {

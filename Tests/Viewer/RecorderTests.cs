@@ -150,6 +150,30 @@ namespace Fulcrum.Tests.Viewer
         }
 
         [Test]
+        public void A_removed_body_is_flagged_and_a_body_in_its_slot_is_not_taken_for_it()
+        {
+            var world = new World();
+            BodyHandle ground = world.CreateBody(BodyDef.Static(new Vector3(0, -0.5f, 0)));
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Box(new Vector3(5, 0.5f, 5))));
+            BodyHandle first = world.CreateBody(BodyDef.Dynamic(new Vector3(0, 0.5f, 0)));
+            world.AddShape(first, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.5f))));
+            var memory = new MemoryStream();
+            using (var recorder = new Recorder(world, 1f / 60, memory, ownsStream: false))
+            {
+                world.DestroyBody(first);
+                BodyHandle second = world.CreateBody(BodyDef.Dynamic(new Vector3(0, 0.5f, 0)));
+                world.AddShape(second, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.5f))));
+                Assert.That(second.Index, Is.EqualTo(first.Index), "the new body reuses the slot");
+                world.Step(1f / 60);
+                recorder.Record(1);
+            }
+            Recording.Frame frame = Recording.Read(memory.ToArray()).Frames[0];
+            Assert.That(frame.BodyFlags[1] & RecordingFormat.BodyRemoved, Is.EqualTo(RecordingFormat.BodyRemoved));
+            Assert.That(frame.Contacts, Is.Not.Empty);
+            Assert.That(frame.Contacts, Has.All.Matches<Recording.Contact>(c => c.BodyA != 1 && c.BodyB != 1));
+        }
+
+        [Test]
         public void Recording_switched_off_writes_nothing_and_allocates_nothing()
         {
             World world = MixedWorld(out _, out _);

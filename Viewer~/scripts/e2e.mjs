@@ -62,8 +62,16 @@ const pixelAt = (page, x, y) => page.evaluate(([x, y]) => {
 const BACKGROUND = [0x20, 0x24, 0x2a];
 const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
-const port = 20000 + Math.floor(Math.random() * 20000);
-const { url, child } = await serve(resolve(data, 'tower.frec'), port);
+// A random port; another one if that is taken (fulcrum view --port N takes exactly N).
+let server;
+for (let attempt = 0; !server; attempt++) {
+  try {
+    server = await serve(resolve(data, 'tower.frec'), 20000 + Math.floor(Math.random() * 20000));
+  } catch (e) {
+    if (attempt >= 4 || !/in use/.test(e.message)) throw e;
+  }
+}
+const { url, child } = server;
 const browser = await chromium.launch({
   executablePath: chromiumPath,
   // Software WebGL: the CI machine has no GPU.
