@@ -46,18 +46,23 @@ function serve(file, port) {
   });
 }
 
-// The canvas pixel (RGB 0-255) under a page point; the renderer keeps its drawing buffer.
-const pixelAt = (page, x, y) => page.evaluate(([x, y]) => {
-  const canvas = document.querySelector('#viewport canvas');
-  const r = canvas.getBoundingClientRect();
-  const px = Math.round((x - r.left) * canvas.width / r.width), py = Math.round((y - r.top) * canvas.height / r.height);
-  const copy = document.createElement('canvas');
-  copy.width = canvas.width; copy.height = canvas.height;
-  const g = copy.getContext('2d');
-  window.fulcrumViewer.render();
-  g.drawImage(canvas, 0, 0);
-  return Array.from(g.getImageData(px, py, 1, 1).data.slice(0, 3));
-}, [x, y]);
+// The pixel (RGB 0-255) at a page point of a real Playwright screenshot of the page: the PNG
+// is decoded by the browser itself (an <img> drawn into a 2D canvas), so no decoder is needed here.
+async function pixelAt(page, x, y) {
+  await page.evaluate(() => window.fulcrumViewer.render());
+  const png = (await page.screenshot()).toString('base64');
+  return page.evaluate(async ([png, x, y]) => {
+    const image = new Image();
+    image.src = 'data:image/png;base64,' + png;
+    await image.decode();
+    const copy = document.createElement('canvas');
+    copy.width = image.width; copy.height = image.height;
+    const g = copy.getContext('2d');
+    g.drawImage(image, 0, 0);
+    const scale = image.width / window.innerWidth;
+    return Array.from(g.getImageData(Math.round(x * scale), Math.round(y * scale), 1, 1).data.slice(0, 3));
+  }, [png, x, y]);
+}
 
 const BACKGROUND = [0x20, 0x24, 0x2a];
 const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
@@ -133,6 +138,19 @@ try {
   await page.evaluate(() => window.fulcrumViewer.goTo(Math.floor(window.fulcrumViewer.frameCount / 2)));
   await page.mouse.click(p.x, p.y);
   await page.screenshot({ path: resolve(out, 'viewer.png') });
+  await page.evaluate(() => window.fulcrumViewer.goTo(0));
+
+  // Contacts and normals are drawn: at a contact point of frame 30, switching both off
+  // changes the pixel.
+  await page.evaluate(() => window.fulcrumViewer.goTo(30));
+  const cp = await page.evaluate(() => window.fulcrumViewer.contactOnScreen(0));
+  const withContacts = await pixelAt(page, cp.x, cp.y);
+  await page.click('#show-contacts');
+  await page.click('#show-normals');
+  const withoutContacts = await pixelAt(page, cp.x, cp.y);
+  await page.click('#show-contacts');
+  await page.click('#show-normals');
+  check(distance(withContacts, withoutContacts) > 60, `contact overlay drawn (${withContacts} -> ${withoutContacts} when switched off)`);
   await page.evaluate(() => window.fulcrumViewer.goTo(0));
 
   // A toggle changes the picture: wireframe leaves background between the edges.

@@ -1,5 +1,6 @@
 // The viewer's page: loading (URL ?file=, drag and drop, file picker), playback, the
 // panel, and a small hook (window.fulcrumViewer) that the browser tests drive.
+import { Vector3 } from 'three';
 import { Recording, BodyType, BODY_ASLEEP, JOINT_KINDS } from './reader';
 import { View3D, Toggles } from './view3d';
 import { Chart, profileChart, energyChart } from './charts';
@@ -194,6 +195,11 @@ window.fulcrumViewer = {
   open: (bytes: ArrayBuffer, name: string) => open(bytes, name),
   /** Page pixel of body i's centre now. */
   bodyOnScreen: (i: number) => view.project(view.bodyCentre(i)),
+  /** Page pixel of contact point k of the frame on screen. */
+  contactOnScreen: (k: number) => {
+    const c = rec!.frame(current).contacts;
+    return view.project(new Vector3(c[8 * k], c[8 * k + 1], c[8 * k + 2]));
+  },
   /** Page pixel of soft body k's centre now. */
   softOnScreen: (k: number) => view.project(view.softCentre(k)),
   render: () => view.render(),
