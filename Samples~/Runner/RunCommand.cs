@@ -39,15 +39,10 @@ static class RunCommand
                          $", dt {SceneSetup.F(doc.Timestep)} s, {steps} steps ({SceneSetup.F(steps * doc.Timestep)} s), threads {settings.Threads}");
         if (softNote != null) output.WriteLine("note: " + softNote);
 
-        RunResult result;
+        using TraceWriter? trace = tracePath != null ? OpenTrace(tracePath, scene, soft) : null;
         using RecordCommand.Session? recording = recordPath != null ? RecordCommand.Open(recordPath, scene, steps, every) : null;
-        if (tracePath != null)
-        {
-            using var trace = OpenTrace(tracePath, scene, soft);
-            result = SceneRun.Run(scene, steps, doc.Timestep, soft, trace, every, recording?.AfterStep);
-            output.WriteLine($"trace: {trace.BodyPath}, {trace.WorldPath}" + (trace.SoftPath != null ? $", {trace.SoftPath}" : ""));
-        }
-        else result = SceneRun.Run(scene, steps, doc.Timestep, soft, afterStep: recording?.AfterStep);
+        RunResult result = SceneRun.Run(scene, steps, doc.Timestep, soft, trace, every, recording?.AfterStep);
+        if (trace != null) output.WriteLine($"trace: {trace.BodyPath}, {trace.WorldPath}" + (trace.SoftPath != null ? $", {trace.SoftPath}" : ""));
         if (recording != null) output.WriteLine(recording.Summary());
 
         output.WriteLine();
