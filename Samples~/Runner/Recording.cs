@@ -82,6 +82,8 @@ public sealed class Recording
     public List<Joint> Joints { get; } = new();
     /// <summary>Soft bodies in header order.</summary>
     public List<SoftBody> SoftBodies { get; } = new();
+    /// <summary>Whether the file ended inside a frame (a run killed while writing); that frame is left out.</summary>
+    public bool Truncated { get; private set; }
     /// <summary>Frames in file order.</summary>
     public List<Frame> Frames { get; } = new();
 
@@ -116,6 +118,12 @@ public sealed class Recording
         }
         while (!r.AtEnd)
         {
+            // A last frame cut short (the writer was killed mid-frame) is left out, not an error.
+            if (data.Length - r.Position < 4 || data.Length - r.Position - 4 < BinaryPrimitives.ReadUInt32LittleEndian(data.AsSpan(r.Position)))
+            {
+                rec.Truncated = true;
+                break;
+            }
             int length = r.Count();
             int end = r.Position + length;
             rec.Frames.Add(ReadFrame(r, rec));

@@ -218,13 +218,24 @@ namespace Fulcrum.Tests.Viewer
         }
 
         [Test]
-        public void A_truncated_recording_is_refused_with_a_reason()
+        public void A_cut_header_is_refused_with_a_reason_and_a_cut_last_frame_is_left_out()
         {
             World world = MixedWorld(out _, out _);
             var memory = new MemoryStream();
-            using (var recorder = new Recorder(world, 1f / 60, memory, ownsStream: false)) recorder.Record(0);
+            long header;
+            using (var recorder = new Recorder(world, 1f / 60, memory, ownsStream: false))
+            {
+                header = memory.Length;
+                recorder.Record(0);
+                world.Step(1f / 60);
+                recorder.Record(1);
+            }
             byte[] data = memory.ToArray();
-            Assert.That(() => Recording.Read(data[..(data.Length - 3)]), Throws.InstanceOf<InvalidDataException>().With.Message.Contains("ends early"));
+            Recording cut = Recording.Read(data[..(data.Length - 3)]);
+            Assert.That(cut.Truncated, Is.True);
+            Assert.That(cut.Frames, Has.Count.EqualTo(1), "a frame cut short is left out");
+            Assert.That(Recording.Read(data).Truncated, Is.False);
+            Assert.That(() => Recording.Read(data[..(int)(header - 3)]), Throws.InstanceOf<InvalidDataException>().With.Message.Contains("ends early"));
             data[0] = (byte)'X';
             Assert.That(() => Recording.Read(data), Throws.InstanceOf<InvalidDataException>().With.Message.Contains("FREC"));
         }

@@ -34,7 +34,7 @@ function open(data: ArrayBuffer, name: string): void {
     setStatus(`${name}: ${(e as Error).message}`);
     return;
   }
-  setStatus('');
+  setStatus(rec.truncated ? 'the file ends inside a frame (the run was cut off); that frame is left out' : '');
   $('drop-hint').style.display = 'none';
   $('file-name').textContent = `${name} — ${rec.header.bodies.length} bodies, ${rec.header.joints.length} joints, ${rec.header.softBodies.length} soft bodies, ${rec.frameCount} frames`;
   times = rec.series().time;

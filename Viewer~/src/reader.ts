@@ -133,6 +133,8 @@ export class Recording {
   /** byte offset of each frame's body (after its length field) */
   readonly frameOffsets: number[] = [];
   readonly frameEnds: number[] = [];
+  /** whether the file ended inside a frame (that frame is left out) */
+  truncated = false;
   private readonly view: DataView;
   private cache = new Map<number, Frame>();
 
@@ -165,8 +167,10 @@ export class Recording {
     }
     this.header = { version, timestep, gravity, bodies, shapes, joints, softBodies };
     while (c.pos < this.view.byteLength) {
+      // A last frame cut short (the writer was killed mid-frame) is left out, not an error.
+      const left = this.view.byteLength - c.pos;
+      if (left < 4 || left - 4 < this.view.getUint32(c.pos, true)) { this.truncated = true; break; }
       const length = c.u32();
-      c.need(length);
       this.frameOffsets.push(c.pos);
       this.frameEnds.push(c.pos + length);
       c.pos += length;

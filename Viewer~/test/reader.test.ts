@@ -100,8 +100,13 @@ describe('malformed input', () => {
     expect(() => new Recording(copy)).toThrow(/not a Fulcrum recording/);
   });
 
-  it('refuses a cut-off frame', () => {
-    expect(() => new Recording(bytes.subarray(0, bytes.length - 5))).toThrow(RecordingError);
+  it('leaves out a last frame cut short and refuses a cut header', () => {
+    const whole = new Recording(bytes);
+    const cut = new Recording(bytes.subarray(0, bytes.length - 5));
+    expect(whole.truncated).toBe(false);
+    expect(cut.truncated).toBe(true);
+    expect(cut.frameCount).toBe(whole.frameCount - 1);
+    expect(() => new Recording(bytes.subarray(0, 30))).toThrow(RecordingError);
   });
 
   it('refuses an unknown version', () => {
