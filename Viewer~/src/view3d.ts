@@ -176,15 +176,11 @@ export class View3D {
       this.softScratch.push(new Float32Array(sb.vertexCount));
       this.root.add(mesh);
     });
-    const overlay = (colour: number) => {
-      const g = new THREE.BufferGeometry();
-      g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(0), 3));
-      return g;
-    };
-    this.contactPoints = new THREE.Points(overlay(0), new THREE.PointsMaterial({ color: 0xff3b3b, size: 6, sizeAttenuation: false, depthTest: false }));
-    this.normalLines = new THREE.LineSegments(overlay(0), new THREE.LineBasicMaterial({ color: 0xffe14d, depthTest: false }));
-    this.jointLines = new THREE.LineSegments(overlay(0), new THREE.LineBasicMaterial({ vertexColors: true, depthTest: false }));
-    this.aabbLines = new THREE.LineSegments(overlay(0), new THREE.LineBasicMaterial({ color: 0x5aa9ff }));
+    const overlay = () => new THREE.BufferGeometry();
+    this.contactPoints = new THREE.Points(overlay(), new THREE.PointsMaterial({ color: 0xff3b3b, size: 6, sizeAttenuation: false, depthTest: false }));
+    this.normalLines = new THREE.LineSegments(overlay(), new THREE.LineBasicMaterial({ color: 0xffe14d, depthTest: false }));
+    this.jointLines = new THREE.LineSegments(overlay(), new THREE.LineBasicMaterial({ vertexColors: true, depthTest: false }));
+    this.aabbLines = new THREE.LineSegments(overlay(), new THREE.LineBasicMaterial({ color: 0x5aa9ff }));
     for (const o of [this.contactPoints, this.normalLines, this.jointLines, this.aabbLines]) {
       o.frustumCulled = false;
       o.renderOrder = 10;
@@ -262,11 +258,25 @@ export class View3D {
     this.render();
   }
 
+  // Overlays keep one buffer per attribute and grow it by doubling, so that stepping through
+  // a recording does not create GPU buffers every frame; the draw range says how much is used.
+  // (Overlays are never frustum-culled or picked, so they need no bounding sphere.)
   private static setPositions(o: THREE.Points | THREE.LineSegments, data: Float32Array, colours?: Float32Array): void {
     const g = o.geometry;
-    g.setAttribute('position', new THREE.BufferAttribute(data, 3));
-    if (colours) g.setAttribute('color', new THREE.BufferAttribute(colours, 3));
-    g.computeBoundingSphere();
+    View3D.fill(g, 'position', data);
+    if (colours) View3D.fill(g, 'color', colours);
+    g.setDrawRange(0, data.length / 3);
+  }
+
+  private static fill(g: THREE.BufferGeometry, name: string, data: Float32Array): void {
+    let a = g.getAttribute(name) as THREE.BufferAttribute | undefined;
+    if (!a || a.array.length < data.length) {
+      a = new THREE.BufferAttribute(new Float32Array(Math.max(3, data.length, 2 * (a?.array.length ?? 0))), 3);
+      a.setUsage(THREE.DynamicDrawUsage);
+      g.setAttribute(name, a);
+    }
+    (a.array as Float32Array).set(data);
+    a.needsUpdate = true;
   }
 
   private updateContacts(frame: Frame): void {
