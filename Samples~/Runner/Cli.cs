@@ -13,6 +13,8 @@ namespace Fulcrum.Runner;
 /// fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
 ///             (also --seconds S | --steps N, --dt X, --threads N)
 /// fulcrum check SCENE.json
+/// fulcrum run SCENE.json --record OUT.frec  a recording for the browser viewer
+/// fulcrum view [OUT.frec] [--port N]        serves the viewer (Viewer~/dist) and the recording on localhost
 /// </code>
 /// Flags override the scene file. A bad scene or flag exits non-zero with one line naming
 /// the flag or the field, and nothing is written.
@@ -34,11 +36,14 @@ public static class Cli
                       [--iterations N] [--substeps N] [--threads N] [--trace OUT.csv] [--every K]
                       [--save-state FILE] [--restore-state FILE]
                                            save the world state after the run / restore one before it
+                      [--record OUT.frec]  (a recording for 'fulcrum view'; --every K applies to it too)
           fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
                       [--seconds S | --steps N] [--dt X] [--threads N]
           fulcrum check SCENE.json         validate only: every error with its JSON path
           fulcrum fuzz [--count N] [--seed S] [--steps K]
                                            run N seeded hostile worlds; list any that diverge or escape
+          fulcrum view [OUT.frec] [--port N] [--viewer DIR]
+                                           serve the browser viewer and the recording on http://127.0.0.1:8765/
         """;
 
     /// <summary>Runs one command line; returns the exit code. Everything printed goes to the two writers.</summary>
@@ -54,6 +59,7 @@ public static class Cli
                 case "sweep": return SweepCommand.Run(new Arguments("sweep", args, 1, SweepCommand.Flags), output);
                 case "report": return ReportCommand.Run(args[1..], output);
                 case "fuzz": return FuzzCommand.Run(new Arguments("fuzz", args, 1, FuzzCommand.Flags), output);
+                case "view": return ViewCommand.Run(new Arguments("view", args, 1, ViewCommand.Flags), output);
                 case "help" or "--help" or "-h":
                     output.WriteLine(Usage);
                     return ExitOk;

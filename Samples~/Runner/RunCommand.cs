@@ -8,7 +8,7 @@ namespace Fulcrum.Runner;
 static class RunCommand
 {
     public static readonly string[] Flags =
-        { "--seconds", "--steps", "--dt", "--solver", "--iterations", "--substeps", "--threads", "--trace", "--every", "--save-state", "--restore-state" };
+        { "--seconds", "--steps", "--dt", "--solver", "--iterations", "--substeps", "--threads", "--trace", "--every", RecordCommand.Flag, "--save-state", "--restore-state" };
 
     /// <summary>Simulated time when neither --steps nor --seconds is given, s.</summary>
     public const float DefaultSeconds = 5f;
@@ -21,7 +21,8 @@ static class RunCommand
         string? tracePath = a.String("--trace");
         if (tracePath != null && tracePath.Length == 0) throw new UsageException("--trace: expected a file name");
         if (tracePath != null && Directory.Exists(tracePath)) throw new UsageException($"--trace: '{tracePath}' is a directory; give a file name such as {Path.Combine(tracePath, "trace.csv")}");
-        if (a.Has("--every") && tracePath == null) throw new UsageException("--every: only applies with --trace");
+        string? recordPath = RecordCommand.PathOf(a);
+        if (a.Has("--every") && tracePath == null && recordPath == null) throw new UsageException("--every: only applies with --trace or --record");
         string? restorePath = a.String("--restore-state"), savePath = a.String("--save-state");
         StateFlags.Check(restorePath, savePath);
         WorldSettings settings = SceneSetup.Settings(a);
@@ -41,14 +42,11 @@ static class RunCommand
         if (softNote != null) output.WriteLine("note: " + softNote);
         if (restorePath != null) StateFlags.Restore(scene, restorePath, output);
 
-        RunResult result;
-        if (tracePath != null)
-        {
-            using var trace = OpenTrace(tracePath, scene, soft);
-            result = SceneRun.Run(scene, steps, doc.Timestep, soft, trace, every);
-            output.WriteLine($"trace: {trace.BodyPath}, {trace.WorldPath}" + (trace.SoftPath != null ? $", {trace.SoftPath}" : ""));
-        }
-        else result = SceneRun.Run(scene, steps, doc.Timestep, soft);
+        using TraceWriter? trace = tracePath != null ? OpenTrace(tracePath, scene, soft) : null;
+        using RecordCommand.Session? recording = recordPath != null ? RecordCommand.Open(recordPath, scene, steps, every) : null;
+        RunResult result = SceneRun.Run(scene, steps, doc.Timestep, soft, trace, every, recording?.AfterStep);
+        if (trace != null) output.WriteLine($"trace: {trace.BodyPath}, {trace.WorldPath}" + (trace.SoftPath != null ? $", {trace.SoftPath}" : ""));
+        if (recording != null) output.WriteLine(recording.Summary());
 
         output.WriteLine();
         var table = new TextTable("steps", "ms/step median", "ms/step p95", "max penetration (m)", "max joint error (m)",
