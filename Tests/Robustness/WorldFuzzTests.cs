@@ -19,12 +19,15 @@ namespace Fulcrum.Tests.Robustness
     /// </summary>
     public class WorldFuzzTests
     {
-        // Measured on seeds 0-299 (180 steps each): 0 refused, 0 diverged, 4 escaped (3 + 1).
+        // Measured on seeds 0-299 (180 steps each): 0 refused, 0 diverged, 3 escaped (1 + 2:
+        // seeds 106, 229, 246; 229 is a 633 kg body hanging from 0.06-0.09 kg links fixed to the
+        // world, which one PGS iteration cannot hold). 4 before the speed cap also bounded the
+        // velocities the relax passes leave and the reach counted launch spin (|v| + |w| r).
         // Before the speed cap was applied to the solver's velocities too, 12 of them left the
         // world bounds (flung at up to 1e5 m/s) and 19 escaped; before the hinge's swing row,
         // 10 escaped.
-        [TestCase(0, 150, 3)]
-        [TestCase(150, 150, 1)]
+        [TestCase(0, 150, 1)]
+        [TestCase(150, 150, 2)]
         public void Hostile_worlds_are_refused_or_never_diverge(int firstSeed, int count, int escapesMeasured)
         {
             var failures = new List<string>();
