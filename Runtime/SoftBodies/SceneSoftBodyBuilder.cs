@@ -80,6 +80,7 @@ namespace Fulcrum.SoftBodies
             if (s.Substeps is int substeps) def.Substeps = substeps;
             if (s.Iterations is int iterations) def.Iterations = iterations;
             if (s.DampingTime is float dampingTime) def.DampingTime = dampingTime;
+            if (s.Solver == "newton") def.Solver = SoftSolver.Newton;
             if (s.LinearDamping is float linearDamping) def.LinearDamping = linearDamping;
             if (s.GravityScale is float gravityScale) def.GravityScale = gravityScale;
             if (s.Friction is float friction) def.Friction = friction;

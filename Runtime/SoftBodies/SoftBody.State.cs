@@ -44,6 +44,7 @@ namespace Fulcrum.SoftBodies
             w.Write(CollideWithShapes);
             w.Write(CollideWithSoftBodies);
             w.Write(Plasticity);
+            w.Write(Solver);
         }
 
         /// <summary>
@@ -80,6 +81,8 @@ namespace Fulcrum.SoftBodies
             float gravityScale = r.Read<float>("soft gravity scale"), friction = r.Read<float>("soft friction");
             bool withShapes = r.Read<bool>("soft shape collision flag"), withSoft = r.Read<bool>("soft soft-collision flag");
             var plasticity = r.Read<SoftPlasticity>("soft plasticity");
+            var solver = r.Read<SoftSolver>("soft solver");
+            if (solver != SoftSolver.Xpbd && (solver != SoftSolver.Newton || Tets.Length == 0)) throw r.Error($"{who}: saved solver {(int)solver} does not fit this body.");
             for (int i = 0; i < tetElements.Length; i++)
             {
                 ref TetElement t = ref tetElements[i];
@@ -126,6 +129,7 @@ namespace Fulcrum.SoftBodies
                 CollideWithShapes = withShapes;
                 CollideWithSoftBodies = withSoft;
                 Plasticity = plasticity;
+                Solver = solver;
             };
         }
     }

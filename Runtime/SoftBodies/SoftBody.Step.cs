@@ -6,6 +6,7 @@ namespace Fulcrum.SoftBodies
     public sealed partial class SoftBody
     {
         RangeJob? _tetJob;
+        Vector3[]? _target;                 // Newton: the substep's inertial targets
         MembraneRangeJob? _membraneJob;
         BendingRangeJob? _bendingJob;
         // Inertia scaling against much heavier rigid bodies (see ScaleInertia): the factor this
@@ -111,6 +112,11 @@ namespace Fulcrum.SoftBodies
             Array.Clear(TriLambda, 0, TriLambda.Length);
             Array.Clear(BendLambda, 0, BendLambda.Length);
             if (CollideWithShapes) Contacts.BeginSubstep(X.Length);
+            if (Solver == SoftSolver.Newton)
+            {
+                SubstepNewton(h, coupling);
+                return;
+            }
             for (int iteration = 0; iteration < Iterations; iteration++)
             {
                 // Contacts before the elastic pass: projected after it, they keep re-straining
@@ -134,6 +140,28 @@ namespace Fulcrum.SoftBodies
                 RunElements(h, damping: true, pool);
                 if (Attachments.Length > 0) AttachmentSolver.HandDampingToBodies(World, Attachments, X, V, M, AttachedVelocity, coupling);
             }
+        }
+
+        /// <summary>
+        /// The rest of a substep with <see cref="SoftSolver.Newton"/>: the predicted positions are the
+        /// inertial targets; per iteration one Newton step of implicit Euler, then contacts and
+        /// attachments projected; friction; velocities from the positions. Damping is part of
+        /// the Newton step (no separate velocity pass).
+        /// </summary>
+        void SubstepNewton(float h, RigidCoupling coupling)
+        {
+            if (_target == null || _target.Length != X.Length) _target = new Vector3[X.Length];
+            Array.Copy(X, _target, X.Length);
+            for (int iteration = 0; iteration < Iterations; iteration++)
+            {
+                NewtonSolver!.Step(this, _target, h);
+                if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
+                if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
+            }
+            if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: false);
+            SelfContacts?.Solve(X, W);
+            float invH = 1f / h;
+            for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;
         }
 
         /// <summary>Every element family, colour by colour: the position solve, or the damping pass.</summary>

@@ -78,6 +78,7 @@ namespace Fulcrum.SoftBodies
             CollidesWith = def.CollidesWith;
             Plasticity = def.Plasticity;
             Thickness = def.Thickness;
+            _solver = def.Solver;
 
             Vector3[] rest = mesh.VertexArray;
             int n = rest.Length;
@@ -205,6 +206,7 @@ namespace Fulcrum.SoftBodies
             for (int k = 0; k < Attachments.Length; k++) FreeW[Attachments[k].Vertex] = 0f;
             Probes = ProbeBinder.Bind(mesh, def.Probes);
             if (def.SelfCollision) SelfContacts = new SelfCollision(mesh, def.CollisionRadius);
+            if (_solver == SoftSolver.Newton) NewtonSolver = new ImplicitNewtonSolver(this);
         }
 
         /// <summary>The handle of this body.</summary>
@@ -279,14 +281,47 @@ namespace Fulcrum.SoftBodies
         /// <summary>Shape layers this body collides with.</summary>
         public uint CollidesWith { get; }
 
+        /// <summary>
+        /// The elastic solver (<see cref="SoftSolver"/>); may be switched between steps. Newton
+        /// needs tets: setting it on a shell throws <see cref="InvalidOperationException"/>.
+        /// </summary>
+        public SoftSolver Solver
+        {
+            get => _solver;
+            set
+            {
+                ThrowIfStepping();
+                if (value == SoftSolver.Newton && Tets.Length == 0)
+                    throw new InvalidOperationException("SoftSolver.Newton solves tetrahedra; this body is a shell (use SoftSolver.Xpbd).");
+                if (value != SoftSolver.Xpbd && value != SoftSolver.Newton) throw new ArgumentOutOfRangeException(nameof(value), $"unknown solver {value}.");
+                _solver = value;
+                if (value == SoftSolver.Newton && NewtonSolver == null) NewtonSolver = new ImplicitNewtonSolver(this);
+            }
+        }
+
+        SoftSolver _solver;
+
+        /// <summary>The Newton solver's band system, built when the solver is first Newton.</summary>
+        internal ImplicitNewtonSolver? NewtonSolver;
+
         /// <summary>Plastic flow settings.</summary>
         public SoftPlasticity Plasticity { get; set; }
 
         /// <summary>Shell thickness, metres.</summary>
         public float Thickness { get; }
 
-        /// <summary>The substeps used for a step of <paramref name="dt"/>: <see cref="Substeps"/>, or one per 1/600 s.</summary>
-        public int SubstepsFor(float dt) => Substeps > 0 ? Substeps : Math.Max(1, Math.Min(64, (int)MathF.Ceiling(dt * 600f - 1e-3f)));
+        /// <summary>
+        /// The substeps used for a step of <paramref name="dt"/>: <see cref="Substeps"/>, or one per
+        /// 1/600 s; a <see cref="SoftSolver.Newton"/> body that touches nothing this step (no shape
+        /// within reach, no attachment) takes one (implicit Euler is stable at the whole step).
+        /// </summary>
+        public int SubstepsFor(float dt) =>
+            Substeps > 0 ? Substeps
+            : _solver == SoftSolver.Newton && !Touching ? 1
+            : Math.Max(1, Math.Min(64, (int)MathF.Ceiling(dt * 600f - 1e-3f)));
+
+        /// <summary>True when this step's gather found shapes within reach or the body has attachments.</summary>
+        internal bool Touching => Attachments.Length > 0 || (CollideWithShapes && (Contacts.CandidateCount > 0 || Contacts.MeshPairCount > 0));
 
         /// <summary>The world position of probe <paramref name="index"/> (barycentric in its rest element).</summary>
         public Vector3 GetProbe(int index)

@@ -83,6 +83,12 @@ namespace Fulcrum.SoftBodies
         /// <summary>Shells only: multiplies the physical bending rigidity; 0 turns bending off. &gt;= 0. Default: 1.</summary>
         public float BendingScale;
 
+        /// <summary>
+        /// The elastic solver (see <see cref="SoftSolver"/>). Default <see cref="SoftSolver.Xpbd"/>;
+        /// <see cref="SoftSolver.Newton"/> converges on stiff materials and needs a tetrahedral mesh.
+        /// </summary>
+        public SoftSolver Solver;
+
         /// <summary>The defaults documented on each field (no mesh yet).</summary>
         public static SoftBodyDef Default => new SoftBodyDef
         {
@@ -128,6 +134,8 @@ namespace Fulcrum.SoftBodies
                 throw new ArgumentException($"softBody.InitialDeformation must be invertible, got det = {InitialDeformation.Determinant}.", "softBody.InitialDeformation");
             if (Substeps < 0 || Substeps > 1000) throw new ArgumentException($"softBody.Substeps must be in [0, 1000], got {Substeps}.", "softBody.Substeps");
             if (Iterations < 1 || Iterations > 1000) throw new ArgumentException($"softBody.Iterations must be in [1, 1000], got {Iterations}.", "softBody.Iterations");
+            if (Solver != SoftSolver.Xpbd && Solver != SoftSolver.Newton) throw new ArgumentException($"softBody.Solver must be Xpbd or Newton, got {(int)Solver}.", "softBody.Solver");
+            if (Solver == SoftSolver.Newton && Mesh.IsShell) throw new ArgumentException("softBody.Solver Newton solves tetrahedra; a shell mesh needs Xpbd.", "softBody.Solver");
             Mathematics.Validate.NonNegative(DampingTime, "softBody.DampingTime");
             Mathematics.Validate.NonNegative(LinearDamping, "softBody.LinearDamping");
             Mathematics.Validate.Finite(GravityScale, "softBody.GravityScale");

@@ -8,7 +8,7 @@ namespace Fulcrum.SoftBodies
         static readonly Type[] StateTypes =
         {
             typeof(Vector2), typeof(TetElement), typeof(TetGradients), typeof(TriangleElement), typeof(BendElement),
-            typeof(Attachment), typeof(SoftPlasticity),
+            typeof(Attachment), typeof(SoftPlasticity), typeof(SoftSolver),
         };
 
         bool IStateStage.HasState => _slots.Count > 0;

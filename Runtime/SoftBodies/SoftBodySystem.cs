@@ -91,11 +91,13 @@ namespace Fulcrum.SoftBodies
             if (threads > 1 && (_pool == null || _pool.Threads != threads)) _pool = new ParallelRanges(threads);
             ParallelRanges? pool = threads > 1 ? _pool : null;
 
+            _coupling.Begin(world, dt);
+            for (int k = 0; k < _active.Count; k++) _active[k].BeginStep(dt, _coupling);
+            // After BeginStep: a Newton body's substeps depend on whether it touches anything.
             int substeps = 1;
             for (int k = 0; k < _active.Count; k++) substeps = Math.Max(substeps, _active[k].SubstepsFor(dt));
             float h = dt / substeps;
-            _coupling.Begin(world, dt, substeps);
-            for (int k = 0; k < _active.Count; k++) _active[k].BeginStep(dt, _coupling);
+            _coupling.SetSubsteps(substeps);
             _softContacts.FindPairs(_active, world.Gravity.Length(), dt);
             for (int s = 0; s < substeps; s++)
             {

@@ -394,6 +394,8 @@ namespace Fulcrum.Scenes
                 if (s.Substeps is int substeps) IntInRange(substeps, 0, 1000, P(path, "substeps"));
                 if (s.Iterations is int iterations) IntInRange(iterations, 1, 1000, P(path, "iterations"));
                 if (s.DampingTime is float dampingTime) NonNegative(dampingTime, P(path, "dampingTime"));
+                if (s.Solver == "newton" && s.Mesh?.Type == SceneSoftMeshType.Cloth)
+                    Error(P(path, "solver"), "newton solves tetrahedra; a cloth (shell) mesh needs xpbd");
                 if (s.LinearDamping is float linearDamping) NonNegative(linearDamping, P(path, "linearDamping"));
                 if (s.GravityScale is float gravityScale) Finite(gravityScale, P(path, "gravityScale"));
                 if (s.Friction is float friction) NonNegative(friction, P(path, "friction"));

@@ -169,6 +169,7 @@ namespace Fulcrum.Scenes
             if (s.Substeps is int substeps) o.Add("substeps", substeps);
             if (s.Iterations is int iterations) o.Add("iterations", iterations);
             if (s.DampingTime is float dampingTime) o.Add("dampingTime", dampingTime);
+            if (s.Solver != null) o.Add("solver", s.Solver);
             if (s.LinearDamping is float linearDamping) o.Add("linearDamping", linearDamping);
             if (s.GravityScale is float gravityScale) o.Add("gravityScale", gravityScale);
             if (s.Friction is float friction) o.Add("friction", friction);

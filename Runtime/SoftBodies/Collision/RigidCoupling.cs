@@ -50,14 +50,14 @@ namespace Fulcrum.SoftBodies
         int _substeps;
         World _world = null!;
 
-        /// <summary>Forgets last step's bodies; the coming step is <paramref name="dt"/> long in <paramref name="substeps"/> substeps.</summary>
-        public void Begin(World world, float dt, int substeps)
+        /// <summary>Forgets last step's bodies; the coming step is <paramref name="dt"/> long.</summary>
+        public void Begin(World world, float dt)
         {
             _world = world;
             BodyStorage bodies = world.Bodies;
             _bodies = bodies;
             _dt = dt;
-            _substeps = substeps;
+            _substeps = 1;
             if (_entryOfSlot.Length < bodies.SlotCount)
             {
                 int old = _entryOfSlot.Length;
@@ -86,7 +86,7 @@ namespace Fulcrum.SoftBodies
             // Back to the start of the step; BeginSubstep integrates it again.
             Vector3 v0 = b.StartLinearVelocity[slot], w0 = b.StartAngularVelocity[slot];
             Vector3 v1 = b.LinearVelocity[slot], w1 = b.AngularVelocity[slot];
-            float invDt = 1f / _dt, invN = 1f / _substeps;
+            float invDt = 1f / _dt;
             _acceleration[e] = (v1 - v0) * invDt;
             _angularAcceleration[e] = (w1 - w0) * invDt;
             // Where the rigid solver's own integrator (n substeps of v += a h, x += v h) takes the
@@ -103,14 +103,30 @@ namespace Fulcrum.SoftBodies
                 center += v * hr;
                 rotation = Rotation.Integrate(rotation, w, hr);
             }
-            _correction[e] = (_endCenter[e] - center) * invN;
-            _angularCorrection[e] = Rotation.ToRotationVector(_endRotation[e] * Quaternion.Conjugate(rotation)) * invN;
+            _correction[e] = _endCenter[e] - center;
+            _angularCorrection[e] = Rotation.ToRotationVector(_endRotation[e] * Quaternion.Conjugate(rotation));
             b.Center[slot] = _startCenter[e];
             b.Rotation[slot] = _startRotation[e];
             b.LinearVelocity[slot] = v0;
             b.AngularVelocity[slot] = w0;
             b.SyncOriginFromCenter(slot);
             b.UpdateWorldInertia(slot);
+        }
+
+        /// <summary>
+        /// Sets the substeps of this step (known once every soft body has gathered what it may
+        /// touch): the rigid solve's position corrections are spread over them.
+        /// </summary>
+        public void SetSubsteps(int substeps)
+        {
+            float invN = 1f / substeps;
+            for (int e = 0; e < _count; e++)
+            {
+                if (_bodies.Type[_slot[e]] != BodyType.Dynamic) continue;
+                _correction[e] *= invN;
+                _angularCorrection[e] *= invN;
+            }
+            _substeps = substeps;
         }
 
         /// <summary>

@@ -27,6 +27,11 @@ namespace Fulcrum.SoftBodies
         // and the friction spent against them, so the cone bounds the whole substep.
         float[] _pushed = Array.Empty<float>();
         float[] _held = Array.Empty<float>();
+        // Per vertex: the normal of its last push by an immovable shape (static or kinematic),
+        // and whether that happened in this substep or the last (the Newton solver holds such
+        // vertices along the normal, see ImplicitNewtonSolver).
+        Vector3[] _normal = Array.Empty<Vector3>();
+        bool[] _held0 = Array.Empty<bool>(), _held1 = Array.Empty<bool>();
 
         /// <summary>Vertex-triangle pairs gathered against triangle meshes for this step.</summary>
         public int MeshPairCount => _meshes.Count;
@@ -91,6 +96,13 @@ namespace Fulcrum.SoftBodies
             return heaviest;
         }
 
+        /// <summary>True (with its normal) when an immovable shape pushed vertex <paramref name="i"/> in this substep or the last.</summary>
+        public bool Touches(int i, out Vector3 normal)
+        {
+            normal = i < _normal.Length ? _normal[i] : default;
+            return i < _held0.Length && (_held0[i] || _held1[i]);
+        }
+
         /// <summary>Starts a substep: no vertex has been pushed or held yet.</summary>
         public void BeginSubstep(int vertexCount)
         {
@@ -98,7 +110,14 @@ namespace Fulcrum.SoftBodies
             {
                 _pushed = new float[vertexCount];
                 _held = new float[vertexCount];
+                _normal = new Vector3[vertexCount];
+                _held0 = new bool[vertexCount];
+                _held1 = new bool[vertexCount];
             }
+            bool[] last = _held1;
+            _held1 = _held0;
+            _held0 = last;
+            Array.Clear(_held0, 0, vertexCount);
             Array.Clear(_pushed, 0, vertexCount);
             Array.Clear(_held, 0, vertexCount);
         }
@@ -135,6 +154,11 @@ namespace Fulcrum.SoftBodies
                         x[i] += wi * dl * n;
                         coupling.Push(owner, contact, -dl * n, h);
                         _pushed[i] += dl;
+                        if (wb == 0f)
+                        {
+                            _normal[i] = n;
+                            _held0[i] = true;
+                        }
                     }
 
                     Vector3 relative = (x[i] - xPrev[i]) - coupling.PointVelocity(owner, contact) * h;

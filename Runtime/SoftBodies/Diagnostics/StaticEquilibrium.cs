@@ -23,8 +23,7 @@ namespace Fulcrum.SoftBodies
         readonly double[] _force;
         readonly bool[] _fixed;
         readonly double[] _h, _g, _d, _trial, _c, _p, _dp;
-        readonly MaterialModel _model;
-        readonly double _mu, _lambda, _alpha;
+        readonly NeoHookeanTangent _tangent;
 
         /// <summary>Current positions, 3 per vertex (x, y, z); starts at the rest shape.</summary>
         public double[] X { get; }
@@ -58,7 +57,7 @@ namespace Fulcrum.SoftBodies
                 var dm = new double[9];
                 for (int k = 0; k < 3; k++)
                     for (int i = 0; i < 3; i++) dm[3 * i + k] = X[3 * _tets[4 * t + k + 1] + i] - X[3 * _tets[4 * t] + i];
-                double det = Det(dm);
+                double det = NeoHookeanTangent.Det(dm);
                 if (!(det > 0)) throw new ArgumentException($"tet {t} has non-positive rest volume.", nameof(mesh));
                 var inv = new double[9];
                 Inverse(dm, det, inv);
@@ -71,17 +70,7 @@ namespace Fulcrum.SoftBodies
                 }
                 for (int a = 0; a < 4; a++) Mass[_tets[4 * t + a]] += material.Density * _volume[t] / 4.0;
             }
-            _model = material.Model;
-            if (_model == MaterialModel.StableNeoHookean)
-            {
-                StableNeoHookeanEnergy e = StableNeoHookeanEnergy.Of(material);
-                _mu = e.Mu; _lambda = e.Lambda; _alpha = 1.0 + 0.75 * _mu / _lambda;
-            }
-            else
-            {
-                LameParameters l = material.LinearLame;
-                _mu = l.Mu; _lambda = l.Lambda;
-            }
+            _tangent = new NeoHookeanTangent(material);
             _force = new double[3 * _n];
             _fixed = new bool[3 * _n];
             _h = new double[9 * _n * _n];
@@ -188,7 +177,7 @@ namespace Fulcrum.SoftBodies
             for (int t = 0; t < _volume.Length; t++)
             {
                 DeformationGradientOf(x, t, f);
-                e += _volume[t] * Psi(f);
+                e += _volume[t] * _tangent.Psi(f);
             }
             for (int i = 0; i < x.Length; i++) e -= _force[i] * x[i];
             return e;
@@ -207,8 +196,8 @@ namespace Fulcrum.SoftBodies
             {
                 DeformationGradientOf(x, t, f);
                 double vol = _volume[t];
-                e += vol * Psi(f);
-                Stress(f, _p);
+                e += vol * _tangent.Psi(f);
+                _tangent.Stress(f, _p);
                 int r = 12 * t;
                 for (int a = 0; a < 4; a++)
                 {
@@ -226,7 +215,7 @@ namespace Fulcrum.SoftBodies
                 {
                     Array.Clear(unit, 0, 9);
                     unit[lq] = 1;
-                    StressDifferential(f, unit, _dp);
+                    _tangent.StressDifferential(f, unit, _dp);
                     for (int ij = 0; ij < 9; ij++) _c[9 * ij + lq] = _dp[ij];
                 }
                 // K[(a,i),(b,l)] = V sum_j sum_q r_a[j] C[(i,j),(l,q)] r_b[q].
@@ -268,74 +257,6 @@ namespace Fulcrum.SoftBodies
                     for (int a = 0; a < 4; a++) s += x[3 * _tets[4 * t + a] + i] * _rest[r + 3 * a + j];
                     f[3 * i + j] = s;
                 }
-        }
-
-        double Psi(double[] f)
-        {
-            double ic = 0;
-            for (int k = 0; k < 9; k++) ic += f[k] * f[k];
-            double j = Det(f);
-            if (_model == MaterialModel.StableNeoHookean)
-                return 0.5 * _mu * (ic - 3) + 0.5 * _lambda * (j - _alpha) * (j - _alpha) - 0.5 * _mu * Math.Log((ic + 1) / 4)
-                    - 0.5 * _lambda * (1 - _alpha) * (1 - _alpha);
-            if (j <= 0) return double.PositiveInfinity;
-            double lj = Math.Log(j);
-            return 0.5 * _mu * (ic - 3) - _mu * lj + 0.5 * _lambda * lj * lj;
-        }
-
-        /// <summary>First Piola-Kirchhoff stress P = dPsi/dF (row-major).</summary>
-        void Stress(double[] f, double[] p)
-        {
-            double ic = 0;
-            for (int k = 0; k < 9; k++) ic += f[k] * f[k];
-            double j = Det(f);
-            Span<double> cof = stackalloc double[9];
-            Cofactor(f, cof);
-            if (_model == MaterialModel.StableNeoHookean)
-            {
-                double a = _mu * ic / (ic + 1), c = _lambda * (j - _alpha);
-                for (int k = 0; k < 9; k++) p[k] = a * f[k] + c * cof[k];
-            }
-            else
-            {
-                double c = (_lambda * Math.Log(j) - _mu) / j;   // (lambda ln J - mu) F^-T, F^-T = cof / J
-                for (int k = 0; k < 9; k++) p[k] = _mu * f[k] + c * cof[k];
-            }
-        }
-
-        /// <summary>dP along dF. cof is quadratic in F, so its differential is exactly (cof(F + dF) - cof(F - dF)) / 2.</summary>
-        void StressDifferential(double[] f, double[] df, double[] dp)
-        {
-            double ic = 0, fdf = 0;
-            for (int k = 0; k < 9; k++) { ic += f[k] * f[k]; fdf += f[k] * df[k]; }
-            double j = Det(f);
-            Span<double> cof = stackalloc double[9];
-            Span<double> plus = stackalloc double[9];
-            Span<double> minus = stackalloc double[9];
-            Span<double> tmp = stackalloc double[9];
-            Cofactor(f, cof);
-            for (int k = 0; k < 9; k++) tmp[k] = f[k] + df[k];
-            Cofactor(tmp, plus);
-            for (int k = 0; k < 9; k++) tmp[k] = f[k] - df[k];
-            Cofactor(tmp, minus);
-            double dj = 0;
-            for (int k = 0; k < 9; k++) dj += cof[k] * df[k];
-            if (_model == MaterialModel.StableNeoHookean)
-            {
-                double a = _mu * ic / (ic + 1), b = 2 * _mu * fdf / ((ic + 1) * (ic + 1)), c = _lambda * (j - _alpha);
-                for (int k = 0; k < 9; k++) dp[k] = a * df[k] + b * f[k] + _lambda * dj * cof[k] + c * 0.5 * (plus[k] - minus[k]);
-            }
-            else
-            {
-                // P = mu F + (lambda ln J - mu) G, G = cof / J; dG = dcof / J - cof dJ / J^2.
-                double lj = Math.Log(j), c = _lambda * lj - _mu;
-                for (int k = 0; k < 9; k++)
-                {
-                    double g = cof[k] / j;
-                    double dg = 0.5 * (plus[k] - minus[k]) / j - cof[k] * dj / (j * j);
-                    dp[k] = _mu * df[k] + _lambda * (dj / j) * g + c * dg;
-                }
-            }
         }
 
         void FactorWithShift(int m)
@@ -388,20 +309,10 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        static double Det(ReadOnlySpan<double> a) =>
-            a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
-
-        static void Cofactor(ReadOnlySpan<double> a, Span<double> c)
-        {
-            c[0] = a[4] * a[8] - a[5] * a[7]; c[1] = a[5] * a[6] - a[3] * a[8]; c[2] = a[3] * a[7] - a[4] * a[6];
-            c[3] = a[2] * a[7] - a[1] * a[8]; c[4] = a[0] * a[8] - a[2] * a[6]; c[5] = a[1] * a[6] - a[0] * a[7];
-            c[6] = a[1] * a[5] - a[2] * a[4]; c[7] = a[2] * a[3] - a[0] * a[5]; c[8] = a[0] * a[4] - a[1] * a[3];
-        }
-
         static void Inverse(double[] a, double det, double[] inv)
         {
             Span<double> c = stackalloc double[9];
-            Cofactor(a, c);
+            NeoHookeanTangent.Cofactor(a, c);
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 3; j++) inv[3 * i + j] = c[3 * j + i] / det;
         }

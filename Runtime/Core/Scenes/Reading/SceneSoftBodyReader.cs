@@ -24,6 +24,11 @@ namespace Fulcrum.Scenes
             s.Substeps = r.OptionalInt("substeps");
             s.Iterations = r.OptionalInt("iterations");
             s.DampingTime = r.OptionalFloat("dampingTime");
+            if (r.String("solver") is string solver)
+            {
+                if (solver == "xpbd" || solver == "newton") s.Solver = solver;
+                else d.Add(JsonPath.Member(v.Path, "solver"), $"unknown solver '{solver}' (expected xpbd or newton)", v["solver"]);
+            }
             s.LinearDamping = r.OptionalFloat("linearDamping");
             s.GravityScale = r.OptionalFloat("gravityScale");
             s.Friction = r.OptionalFloat("friction");

@@ -53,6 +53,13 @@ namespace Fulcrum.Scenes
         /// </summary>
         public float? DampingTime { get; set; }
 
+        /// <summary>
+        /// <c>solver</c>: the elastic solver, <c>"xpbd"</c> (default) or <c>"newton"</c> (implicit
+        /// Euler with direct Newton steps, for small stiff bodies; tetrahedral meshes only). Null:
+        /// the engine's default.
+        /// </summary>
+        public string? Solver { get; set; }
+
         /// <summary><c>linearDamping</c>: velocity damping, 1/s, &gt;= 0. Null: the engine's default (0).</summary>
         public float? LinearDamping { get; set; }
 
