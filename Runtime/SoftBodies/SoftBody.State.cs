@@ -45,6 +45,7 @@ namespace Fulcrum.SoftBodies
             w.Write(CollideWithSoftBodies);
             w.Write(Plasticity);
             w.Write(Solver);
+            Contacts.WriteState(w);
         }
 
         /// <summary>
@@ -82,6 +83,7 @@ namespace Fulcrum.SoftBodies
             bool withShapes = r.Read<bool>("soft shape collision flag"), withSoft = r.Read<bool>("soft soft-collision flag");
             var plasticity = r.Read<SoftPlasticity>("soft plasticity");
             var solver = r.Read<SoftSolver>("soft solver");
+            Action contacts = Contacts.PrepareRestore(r, X.Length);
             if (solver != SoftSolver.Xpbd && (solver != SoftSolver.Newton || Tets.Length == 0)) throw r.Error($"{who}: saved solver {(int)solver} does not fit this body.");
             for (int i = 0; i < tetElements.Length; i++)
             {
@@ -130,6 +132,7 @@ namespace Fulcrum.SoftBodies
                 CollideWithSoftBodies = withSoft;
                 Plasticity = plasticity;
                 Solver = solver;
+                contacts();
             };
         }
     }

@@ -32,7 +32,7 @@ namespace Fulcrum.Tests.SoftBodies
             return 0.5 * (lo + hi);
         }
 
-        internal static SoftBody StretchedBar(MaterialModel model, float nu, float stretch, int steps, out World world)
+        internal static SoftBody StretchedBar(MaterialModel model, float nu, float stretch, int steps, out World world, SoftSolver solver = SoftSolver.Xpbd)
         {
             world = SoftBodyScenes.ZeroGravityWorld();
             var material = new NeoHookeanMaterial(model, 1e5f, nu, 1000f);
@@ -50,9 +50,10 @@ namespace Fulcrum.Tests.SoftBodies
                 new Vector3(0, -0.1f, 0), new Vector3(0, 0.1f, 0),
                 new Vector3(0, 0, -0.1f), new Vector3(0, 0, 0.1f),
             };
-            def.Substeps = 20;
-            def.Iterations = 2;
+            def.Substeps = solver == SoftSolver.Newton ? 0 : 20;
+            def.Iterations = solver == SoftSolver.Newton ? 1 : 2;
             def.DampingTime = 0.02f;
+            def.Solver = solver;
             SoftBody body = world.GetSoftBody(world.CreateSoftBody(def));
             for (int i = 0; i < steps; i++) world.Step(SoftBodyScenes.Dt);
             return body;

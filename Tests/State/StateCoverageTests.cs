@@ -42,7 +42,8 @@ namespace Fulcrum.Tests.State
             "IslandBuilder.AwakeBodies", "IslandBuilder.AwakeCount",
             // The free list's spare capacity (its entries are compared through the count).
             "SlotAllocator._free",
-            // Soft bodies: the per-step contact and pair searches, job objects and scratch.
+            // Soft bodies: the per-step contact and pair searches (the contacts' held flags for the
+            // Newton solver are saved by SoftBody.WriteState and checked by the round-trip tests), job objects and scratch.
             "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem._pool", "SoftBodySystem._free", "SoftBodySystem.Diverged",
             "SoftBody._tetJob", "SoftBody._membraneJob", "SoftBody._bendingJob", "SoftBody.Contacts", "SoftBody.SelfContacts", "SoftBody._scratch",
         };

@@ -96,6 +96,32 @@ namespace Fulcrum.SoftBodies
             return heaviest;
         }
 
+        /// <summary>Writes what the next step reads: which vertices an immovable shape held in the last substep, and the normals.</summary>
+        internal void WriteState(StateWriter w)
+        {
+            w.WriteArray(_held0);
+            w.WriteArray(_normal);
+        }
+
+        /// <summary>Reads what <see cref="WriteState"/> wrote; the returned action applies it.</summary>
+        internal Action PrepareRestore(StateReader r, int vertexCount)
+        {
+            bool[] held = r.ReadArray<bool>("soft contact holds");
+            Vector3[] normal = r.ReadArrayExactly<Vector3>("soft contact normals", held.Length);
+            if (held.Length != 0 && held.Length < vertexCount) throw r.Error($"soft contact holds for {held.Length} of {vertexCount} vertices.");
+            return () =>
+            {
+                _held0 = held;
+                _held1 = new bool[held.Length];
+                _normal = normal;
+                if (_pushed.Length != held.Length)
+                {
+                    _pushed = new float[held.Length];
+                    _held = new float[held.Length];
+                }
+            };
+        }
+
         /// <summary>True (with its normal) when an immovable shape pushed vertex <paramref name="i"/> in this substep or the last.</summary>
         public bool Touches(int i, out Vector3 normal)
         {

@@ -1,0 +1,167 @@
+using System;
+using System.Linq;
+using System.Numerics;
+using Fulcrum.Scenes;
+using Fulcrum.SoftBodies;
+using NUnit.Framework;
+
+namespace Fulcrum.Tests.SoftBodies
+{
+    /// <summary>
+    /// SoftSolver.Newton (issue 12, item 2): implicit Euler with Newton steps over the whole body
+    /// reaches the converged answer of the mesh where XPBD is far too soft (the E = 1e9 Pa
+    /// cantilever), matches the uniaxial closed form, keeps a nearly incompressible jelly's
+    /// volume, allocates nothing per step, and is refused for shells.
+    /// </summary>
+    public class NewtonSolverTests
+    {
+        // The stiff-bar.json body: 1 x 0.1 x 0.1 m, 10 x 1 x 1 cells, E = 1e9 Pa, nu = 0.3, left end pinned.
+        static readonly Vector3 BarSize = new Vector3(1, 0.1f, 0.1f);
+        static NeoHookeanMaterial BarMaterial => new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e9f, 0.3f, 1000f);
+
+        // Mean downward displacement of the free end's vertices in the converged static state.
+        static float ReferenceTipSag()
+        {
+            SoftMesh mesh = SoftMesh.Box(BarSize, 10, 1, 1);
+            var eq = new StaticEquilibrium(mesh, BarMaterial);
+            eq.AddGravity(new Vector3(0, -9.81f, 0));
+            Vector3[] v = mesh.Vertices.ToArray();
+            for (int i = 0; i < v.Length; i++) if (v[i].X < -0.499f) eq.Pin(i);
+            Assert.That(eq.Solve(100), Is.True);
+            float sag = 0;
+            int n = 0;
+            for (int i = 0; i < v.Length; i++)
+                if (v[i].X > 0.499f) { sag += v[i].Y - eq.Position(i).Y; n++; }
+            return sag / n;
+        }
+
+        static float SimulatedTipSag(SoftSolver solver, int steps)
+        {
+            World w = SoftBodyScenes.ZeroGravityWorld();
+            w.Gravity = new Vector3(0, -9.81f, 0);
+            SoftBodyDef def = SoftBodyDef.Of(SoftMesh.Box(BarSize, 10, 1, 1), BarMaterial, Vector3.Zero);
+            def.Pins = new[] { SoftPin.ToWorld(new Vector3(-0.5f, -1, -1), new Vector3(-0.5f, 1, 1)) };
+            def.Solver = solver;
+            SoftBody bar = w.GetSoftBody(w.CreateSoftBody(def));
+            Vector3[] rest = bar.Mesh.Vertices.ToArray();
+            for (int s = 0; s < steps; s++) w.Step(1 / 60f);
+            float sag = 0;
+            int n = 0;
+            for (int i = 0; i < rest.Length; i++)
+                if (rest[i].X > 0.499f) { sag += rest[i].Y - bar.Positions[i].Y; n++; }
+            return sag / n;
+        }
+
+        [Test]
+        public void The_stiff_cantilever_reaches_its_converged_sag_at_the_default_settings()
+        {
+            float reference = ReferenceTipSag();
+            float newton = SimulatedTipSag(SoftSolver.Newton, 120);
+            float xpbd = SimulatedTipSag(SoftSolver.Xpbd, 120);
+            TestContext.Out.WriteLine($"E = 1e9 cantilever tip sag: converged {reference * 1000:F4} mm, Newton {newton * 1000:F4} mm, XPBD {xpbd * 1000:F2} mm (defaults, 2 s)");
+            Assert.That(reference, Is.EqualTo(0.000329f).Within(0.00002f), "the converged answer of this mesh");
+            Assert.That(newton, Is.EqualTo(reference).Within(0.1f * reference), "within 10 % of the converged sag");
+        }
+
+        [TestCase(MaterialModel.StableNeoHookean, 0.3f, 1.3f)]
+        [TestCase(MaterialModel.NeoHookean, 0.3f, 1.3f)]
+        [TestCase(MaterialModel.StableNeoHookean, 0.45f, 1.5f)]
+        public void A_stretched_bar_matches_the_uniaxial_closed_form(MaterialModel model, float nu, float stretch)
+        {
+            SoftBody bar = UniaxialTests.StretchedBar(model, nu, stretch, 150, out _, SoftSolver.Newton);
+            float a = (bar.GetProbe(1) - bar.GetProbe(0)).Length() / 0.2f;
+            float by = (bar.GetProbe(3) - bar.GetProbe(2)).Length() / 0.2f;
+            double expected = UniaxialTests.LateralStretch(model, bar.Material, a);
+            TestContext.Out.WriteLine($"Newton {model} nu={nu}: axial {a:F4}, lateral {by:F4}, closed form {expected:F4}");
+            Assert.That(a, Is.EqualTo(stretch).Within(0.05f * stretch));
+            Assert.That(by, Is.EqualTo(expected).Within(0.002));
+        }
+
+        [TestCase(SoftSolver.Xpbd, 0.49f, 0.06f, 0.01f)]
+        [TestCase(SoftSolver.Newton, 0.49f, 0.06f, 0.01f)]
+        [TestCase(SoftSolver.Xpbd, 0.4999f, 0.02f, 0.005f)]
+        [TestCase(SoftSolver.Newton, 0.4999f, 0.02f, 0.005f)]
+        public void A_dropped_jelly_keeps_its_volume(SoftSolver solver, float nu, float duringImpact, float atRest)
+        {
+            World w = SoftBodyScenes.WorldWithGround();
+            SoftBodyDef def = SoftBodyScenes.Cube(0.5f, 4, new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e4f, nu, 1030f), new Vector3(0, 1, 0));
+            def.Solver = solver;
+            SoftBody jelly = w.GetSoftBody(w.CreateSoftBody(def));
+            float lowest = 1, highest = 1;
+            for (int s = 0; s < 240; s++)
+            {
+                w.Step(1 / 60f);
+                float ratio = jelly.ComputeStats().VolumeRatio;
+                lowest = MathF.Min(lowest, ratio);
+                highest = MathF.Max(highest, ratio);
+            }
+            float end = jelly.ComputeStats().VolumeRatio;
+            TestContext.Out.WriteLine($"{solver} nu={nu}: volume ratio {lowest:F4}..{highest:F4} over the drop, {end:F4} at rest");
+            Assert.That(1 - lowest, Is.LessThan(duringImpact), "volume lost at impact");
+            Assert.That(highest - 1, Is.LessThan(duringImpact));
+            Assert.That(MathF.Abs(end - 1), Is.LessThan(atRest), "volume at rest");
+        }
+
+        [Test]
+        public void A_resting_newton_body_allocates_nothing_per_step()
+        {
+            World w = SoftBodyScenes.WorldWithGround();
+            SoftBodyDef def = SoftBodyScenes.Cube(0.5f, 3, new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e6f, 0.3f, 1000f), new Vector3(0, 0.3f, 0));
+            def.Solver = SoftSolver.Newton;
+            w.CreateSoftBody(def);
+            for (int s = 0; s < 60; s++) w.Step(1 / 60f);
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int s = 0; s < 60; s++) w.Step(1 / 60f);
+            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.Zero);
+        }
+
+        [Test]
+        public void Newton_is_refused_for_shells_with_the_field_named()
+        {
+            SoftBodyDef cloth = SoftBodyDef.Of(SoftMesh.Cloth(1, 1, 4, 4), NeoHookeanMaterial.Default, Vector3.Zero);
+            cloth.Solver = SoftSolver.Newton;
+            var e = Assert.Throws<ArgumentException>(() => cloth.Validate())!;
+            Assert.That(e.ParamName, Is.EqualTo("softBody.Solver"));
+
+            cloth.Solver = SoftSolver.Xpbd;
+            World w = SoftBodyScenes.ZeroGravityWorld();
+            SoftBody shell = w.GetSoftBody(w.CreateSoftBody(cloth));
+            Assert.Throws<InvalidOperationException>(() => shell.Solver = SoftSolver.Newton);
+            Assert.That(shell.Solver, Is.EqualTo(SoftSolver.Xpbd));
+
+            var cloth1 = SceneFile.Check("""
+                { "format": "fulcrum-scene/1", "softBodies": [ { "name": "flag", "solver": "newton",
+                  "mesh": { "type": "cloth", "size": [1, 1], "cells": [4, 4] }, "material": { "youngsModulus": 1e6, "poissonRatio": 0.3, "density": 400 } } ] }
+                """, out _);
+            Assert.That(cloth1.Select(x => x.ToString()), Has.Some.Contains("$.softBodies[0].solver"));
+            var unknown = SceneFile.Check("""
+                { "format": "fulcrum-scene/1", "softBodies": [ { "name": "b", "solver": "fem",
+                  "mesh": { "type": "box", "size": [1, 1, 1], "cells": [2, 2, 2] }, "material": { "youngsModulus": 1e6, "poissonRatio": 0.3, "density": 400 } } ] }
+                """, out _);
+            Assert.That(unknown.Select(x => x.ToString()), Has.Some.Contains("$.softBodies[0].solver").And.Some.Contains("xpbd or newton"));
+        }
+
+        [Test]
+        public void A_newton_body_saves_and_restores_bit_identically()
+        {
+            static (World, SoftBody) Build()
+            {
+                World w = SoftBodyScenes.WorldWithGround();
+                SoftBodyDef def = SoftBodyScenes.Cube(0.4f, 3, new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e6f, 0.4f, 1000f), new Vector3(0, 0.6f, 0));
+                def.Solver = SoftSolver.Newton;
+                SoftBody b = w.GetSoftBody(w.CreateSoftBody(def));
+                return (w, b);
+            }
+            (World a, _) = Build();
+            for (int s = 0; s < 30; s++) a.Step(1 / 60f);
+            byte[] state = State.StateRoundTripTests.Save(a);
+            for (int s = 0; s < 30; s++) a.Step(1 / 60f);
+            (World b, SoftBody body) = Build();
+            body.Solver = SoftSolver.Xpbd; // the state carries the solver back
+            State.StateRoundTripTests.Restore(b, state);
+            Assert.That(body.Solver, Is.EqualTo(SoftSolver.Newton));
+            for (int s = 0; s < 30; s++) b.Step(1 / 60f);
+            Assert.That(State.StateRoundTripTests.Save(b), Is.EqualTo(State.StateRoundTripTests.Save(a)));
+        }
+    }
+}
