@@ -163,5 +163,20 @@ namespace Fulcrum.Tests.SoftBodies
             for (int s = 0; s < 30; s++) b.Step(1 / 60f);
             Assert.That(State.StateRoundTripTests.Save(b), Is.EqualTo(State.StateRoundTripTests.Save(a)));
         }
+
+        [Test]
+        public void Scene_stiff_bar_newton_sags_as_the_converged_reference()
+        {
+            SceneInstance scene = RigidScenes.RigidSceneFiles.Build("stiff-bar-newton");
+            SoftBodyHandle[] made = SceneSoftBodyBuilder.Build(scene, directory: RigidScenes.RigidSceneFiles.ScenesDirectory);
+            SoftBody bar = scene.World.GetSoftBody(made[0]);
+            Assert.That(bar.Solver, Is.EqualTo(SoftSolver.Newton));
+            float start = bar.GetProbe(0).Y;
+            for (int s = 0; s < 120; s++) scene.World.Step(scene.Timestep);
+            float sag = start - bar.GetProbe(0).Y;
+            float reference = ReferenceTipSag();
+            TestContext.Out.WriteLine($"stiff-bar-newton: tip probe sag {sag * 1000:F4} mm, converged {reference * 1000:F4} mm");
+            Assert.That(sag, Is.EqualTo(reference).Within(0.1f * reference));
+        }
     }
 }
