@@ -11,31 +11,10 @@ namespace Fulcrum.Tests.State
     /// (in this process, or continued in a fresh one) ends in the same state, byte for byte, as
     /// the run in one go; bad files and paths get one line and a non-zero exit.
     /// </summary>
-    public class RunnerStateTests
+    public class RunnerStateTests : Scenes.RunnerSession
     {
-        string _dir = "";
+        string File(string name) => Path.Combine(Dir, name);
 
-        [SetUp]
-        public void MakeTempDir()
-        {
-            _dir = Path.Combine(Path.GetTempPath(), "fulcrum-state-" + Guid.NewGuid().ToString("N"));
-            Directory.CreateDirectory(_dir);
-        }
-
-        [TearDown]
-        public void RemoveTempDir() => Directory.Delete(_dir, recursive: true);
-
-        static string Scene(string name) => Path.Combine(RigidScenes.RigidSceneFiles.ScenesDirectory, name + ".json");
-
-        string File(string name) => Path.Combine(_dir, name);
-
-        static (int code, string output, string error) Fulcrum(params string[] args)
-        {
-            var output = new StringWriter();
-            var error = new StringWriter();
-            int code = Cli.Run(args, output, error);
-            return (code, output.ToString(), error.ToString());
-        }
 
         [TestCase("ragdolls", 90)]
         [TestCase("dominoes", 120)]
@@ -91,7 +70,7 @@ namespace Fulcrum.Tests.State
             Assert.That(garbage.error.Trim(), Does.Contain("Not a Fulcrum world state"));
             Assert.That(garbage.error.Trim().Split('\n'), Has.Length.EqualTo(1));
 
-            var directory = Fulcrum("run", Scene("pyramid"), "--steps", "5", "--save-state", _dir);
+            var directory = Fulcrum("run", Scene("pyramid"), "--steps", "5", "--save-state", Dir);
             Assert.That(directory.code, Is.EqualTo(Cli.ExitUsage));
             Assert.That(directory.error, Does.Contain("--save-state: ").And.Contain("is a directory"));
 

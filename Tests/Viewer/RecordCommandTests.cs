@@ -9,42 +9,12 @@ using NUnit.Framework;
 namespace Fulcrum.Tests.Viewer
 {
     /// <summary><c>fulcrum run --record</c> and <c>fulcrum view</c>.</summary>
-    public class RecordCommandTests
+    public class RecordCommandTests : Scenes.RunnerSession
     {
-        string _dir = "";
-
-        [SetUp]
-        public void MakeTempDir()
-        {
-            _dir = Path.Combine(Path.GetTempPath(), "fulcrum-record-" + Guid.NewGuid().ToString("N"));
-            Directory.CreateDirectory(_dir);
-        }
-
-        [TearDown]
-        public void RemoveTempDir() => Directory.Delete(_dir, recursive: true);
-
-        static string Scene(string name)
-        {
-            for (var d = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); d != null; d = d.Parent)
-            {
-                string candidate = Path.Combine(d.FullName, "Samples~", "Scenes", name + ".json");
-                if (File.Exists(candidate)) return candidate;
-            }
-            throw new AssertionException($"Samples~/Scenes/{name}.json not found above the test directory");
-        }
-
-        static (int code, string output, string error) Fulcrum(params string[] args)
-        {
-            var output = new StringWriter();
-            var error = new StringWriter();
-            int code = Cli.Run(args, output, error);
-            return (code, output.ToString(), error.ToString());
-        }
-
         [Test]
         public void Run_with_record_writes_frame_0_every_kth_step_and_the_last()
         {
-            string path = Path.Combine(_dir, "sub", "tower.frec");
+            string path = Path.Combine(Dir, "sub", "tower.frec");
             var (code, output, error) = Fulcrum("run", Scene("tower-10"), "--steps", "25", "--every", "10", "--record", path);
             Assert.That(code, Is.EqualTo(Cli.ExitOk), error);
             Assert.That(output, Does.Contain("recording: " + path + ", 4 frames"));
@@ -57,7 +27,7 @@ namespace Fulcrum.Tests.Viewer
         [Test]
         public void Run_with_record_of_a_soft_scene_records_vertices_and_element_J()
         {
-            string path = Path.Combine(_dir, "jelly.frec");
+            string path = Path.Combine(Dir, "jelly.frec");
             var (code, _, error) = Fulcrum("run", Scene("jelly-stack"), "--steps", "5", "--record", path);
             Assert.That(code, Is.EqualTo(Cli.ExitOk), error);
             Recording rec = Recording.Read(File.ReadAllBytes(path));
@@ -69,9 +39,9 @@ namespace Fulcrum.Tests.Viewer
         [Test]
         public void A_bad_record_flag_writes_nothing()
         {
-            var (code, _, error) = Fulcrum("run", Scene("tower-10"), "--steps", "5", "--record", _dir);
+            var (code, _, error) = Fulcrum("run", Scene("tower-10"), "--steps", "5", "--record", Dir);
             Assert.That(code, Is.EqualTo(Cli.ExitUsage));
-            Assert.That(error, Does.Contain("--record: '" + _dir + "' is a directory"));
+            Assert.That(error, Does.Contain("--record: '" + Dir + "' is a directory"));
             (code, _, error) = Fulcrum("run", Scene("tower-10"), "--every", "2");
             Assert.That(error, Does.Contain("--every: only applies with --trace or --record"));
         }
@@ -79,9 +49,9 @@ namespace Fulcrum.Tests.Viewer
         [Test]
         public void View_refuses_a_file_that_is_not_a_recording()
         {
-            string path = Path.Combine(_dir, "x.frec");
+            string path = Path.Combine(Dir, "x.frec");
             File.WriteAllText(path, "hello");
-            var (code, _, error) = Fulcrum("view", path, "--viewer", _dir);
+            var (code, _, error) = Fulcrum("view", path, "--viewer", Dir);
             Assert.That(code, Is.EqualTo(Cli.ExitScene));
             Assert.That(error, Does.Contain("not a Fulcrum recording"));
         }
@@ -89,12 +59,12 @@ namespace Fulcrum.Tests.Viewer
         [Test]
         public async Task View_serves_the_viewer_and_the_recording_and_nothing_else()
         {
-            string viewer = Path.Combine(_dir, "dist");
+            string viewer = Path.Combine(Dir, "dist");
             Directory.CreateDirectory(Path.Combine(viewer, "assets"));
             File.WriteAllText(Path.Combine(viewer, "index.html"), "<html>viewer</html>");
             File.WriteAllText(Path.Combine(viewer, "assets", "app.js"), "console.log(1)");
-            File.WriteAllText(Path.Combine(_dir, "secret.txt"), "no");
-            string rec = Path.Combine(_dir, "tower.frec");
+            File.WriteAllText(Path.Combine(Dir, "secret.txt"), "no");
+            string rec = Path.Combine(Dir, "tower.frec");
             Assert.That(Fulcrum("run", Scene("tower-10"), "--steps", "2", "--record", rec).code, Is.EqualTo(0));
 
             int port = 20000 + Random.Shared.Next(20000);
