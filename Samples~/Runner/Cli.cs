@@ -38,7 +38,7 @@ public static class Cli
                                            save the world state after the run / restore one before it
                       [--record OUT.frec]  (a recording for 'fulcrum view'; --every K applies to it too)
           fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
-                      [--seconds S | --steps N] [--dt X] [--threads N]
+                      [--seconds S | --steps N] [--dt X] [--threads N] [--soft-solver xpbd,newton]
           fulcrum check SCENE.json         validate only: every error with its JSON path
           fulcrum fuzz [--count N] [--seed S] [--steps K]
                                            run N seeded hostile worlds; list any that diverge or escape

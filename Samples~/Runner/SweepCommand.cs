@@ -20,7 +20,7 @@ namespace Fulcrum.Runner;
 static class SweepCommand
 {
     public static readonly string[] Flags =
-        { "--solver", "--iterations", "--substeps", "--out", "--seconds", "--steps", "--dt", "--threads" };
+        { "--solver", "--iterations", "--substeps", "--out", "--seconds", "--steps", "--dt", "--threads", "--soft-solver" };
 
     public const float DefaultSeconds = 2f;
     public const int ReferenceIterations = 16, ReferenceSubsteps = 8;
@@ -47,10 +47,16 @@ static class SweepCommand
         settings.EnableSleeping = false;
         SceneDocument doc = SceneSetup.Load(path);
         if (a.PositiveFloat("--dt") is float dt) doc.Timestep = dt;
+        // The soft solvers to sweep: both where every soft body has tets (Newton solves tets
+        // only), and then the converged reference is Newton's; XPBD alone otherwise.
+        bool anySoft = doc.SoftBodies.Count > 0, allTets = true;
+        foreach (SceneSoftBody s in doc.SoftBodies) allTets &= s.Mesh?.Type != SceneSoftMeshType.Cloth;
+        List<string> softSolvers = SoftSolvers(a.String("--soft-solver"), anySoft, allTets, path);
+        string referenceSoft = anySoft && allTets ? "newton" : "xpbd";
         int steps = SceneSetup.Steps(a, doc.Timestep, DefaultSeconds);
 
         // The reference run doubles as the check that the scene builds at all.
-        SceneDocument refDoc = With(doc, SolverType.Tgs, ReferenceIterations, ReferenceSubsteps);
+        SceneDocument refDoc = With(doc, SolverType.Tgs, ReferenceIterations, ReferenceSubsteps, referenceSoft);
         SceneInstance reference = SceneSetup.Build(path, refDoc, settings);
         ISoftBodyMonitor? refSoft = SoftBodySupport.Attach(reference, path, out string? softNote, ReferenceSoftSubsteps, ReferenceSoftIterations);
         List<int> dynamic = DynamicBodies(reference);
@@ -61,29 +67,31 @@ static class SweepCommand
         SceneRun.Run(reference, steps, doc.Timestep, afterStep: n => Record(reference, dynamic, refSoft, refPositions, tracked, n));
 
         output.WriteLine($"sweep: {path}, {steps} steps of {SceneSetup.F(doc.Timestep)} s, reference tgs {ReferenceIterations}x{ReferenceSubsteps}" +
-                         (refSoft != null ? $", soft bodies XPBD {ReferenceSoftSubsteps} substeps x {ReferenceSoftIterations} iterations; swept substeps and iterations set the soft bodies' XPBD solver too" : ""));
+                         (refSoft != null ? $", soft bodies {(referenceSoft == "newton" ? "Newton" : "XPBD")} {ReferenceSoftSubsteps} substeps x {ReferenceSoftIterations} iterations; swept substeps and iterations set the soft bodies' solver too (soft solvers: {string.Join(", ", softSolvers)})" : ""));
         if (softNote != null) output.WriteLine("note: " + softNote);
 
         // Two passes over the settings, the first untimed: every code path is JIT-optimised
         // before it is measured, so the first rows are not priced at unoptimised code.
         var points = new List<SweepPoint>();
         for (int pass = 0; pass < 2; pass++)
+        foreach (string softSolver in softSolvers)
         foreach (SolverType solver in solvers)
         foreach (int it in iterations)
         foreach (int sub in solver == SolverType.Pgs ? new List<int> { 1 } : substeps)
         {
             if (pass == 0)
             {
-                SceneInstance warm = SceneSetup.Build(path, With(doc, solver, it, sub), settings);
+                SceneInstance warm = SceneSetup.Build(path, With(doc, solver, it, sub, softSolver), settings);
                 SceneRun.Run(warm, Math.Min(steps, 60), doc.Timestep, SoftBodySupport.Attach(warm, path, out _, sub, it));
                 continue;
             }
-            SceneInstance scene = SceneSetup.Build(path, With(doc, solver, it, sub), settings);
+            SceneInstance scene = SceneSetup.Build(path, With(doc, solver, it, sub, softSolver), settings);
             ISoftBodyMonitor? soft = SoftBodySupport.Attach(scene, path, out _, sub, it);
             double sum = 0;
             RunResult r = SceneRun.Run(scene, steps, doc.Timestep, soft, afterStep: n => sum += SquaredDistance(scene, dynamic, soft, refPositions, tracked, n));
             float? referenceError = tracked > 0 ? (float)Math.Sqrt(sum / ((double)steps * tracked)) : null;
-            points.Add(new SweepPoint(solver, it, sub, doc.Timestep, r.MedianMs, r.MaxPenetration, r.MaxJointError, referenceError, r.EnergyDrift, r.VolumeError));
+            points.Add(new SweepPoint(solver, it, sub, doc.Timestep, r.MedianMs, r.MaxPenetration, r.MaxJointError, referenceError, r.EnergyDrift, r.VolumeError,
+                anySoft ? softSolver : ""));
         }
 
         Directory.CreateDirectory(outDir);
@@ -92,24 +100,41 @@ static class SweepCommand
         (string errorName, Func<SweepPoint, double> error) = ErrorMetric(points);
         File.WriteAllText(svgPath, SweepPlot.Svg($"{Path.GetFileName(path)}: {errorName} against cost", errorName, points, error), new UTF8Encoding(false));
 
-        var table = new TextTable("solver", "iterations", "substeps", "ms/step", "max penetration (m)", "max joint error (m)", "reference error (m)", "energy drift (J)");
+        var table = new TextTable("solver", "iterations", "substeps", "ms/step", "max penetration (m)", "max joint error (m)", "reference error (m)", "energy drift (J)", "soft solver");
         foreach (SweepPoint p in points)
             table.Add(SceneNames.Of(p.Solver), p.Iterations.ToString(CultureInfo.InvariantCulture), p.Substeps.ToString(CultureInfo.InvariantCulture),
                 TextTable.Number(p.MsPerStep), TextTable.Number(p.MaxPenetration), TextTable.Number(p.MaxJointError),
-                TextTable.Number(p.ReferenceError), TextTable.Number(p.EnergyDrift));
+                TextTable.Number(p.ReferenceError), TextTable.Number(p.EnergyDrift), p.SoftSolver.Length > 0 ? p.SoftSolver : "-");
         table.Write(output);
         output.WriteLine($"wrote {csvPath}, {svgPath}");
         return Cli.ExitOk;
     }
 
-    static SceneDocument With(SceneDocument doc, SolverType solver, int iterations, int substeps)
+    static SceneDocument With(SceneDocument doc, SolverType solver, int iterations, int substeps, string softSolver)
     {
         // Reparse a saved copy: the exact round trip makes this a deep clone.
         SceneDocument copy = SceneFile.Parse(SceneFile.Save(doc));
         copy.Solver.Type = solver;
         copy.Solver.Iterations = iterations;
         copy.Solver.Substeps = substeps;
+        foreach (SceneSoftBody s in copy.SoftBodies) s.Solver = softSolver;
         return copy;
+    }
+
+    // --soft-solver xpbd,newton: checked names; the default is both where Newton applies.
+    static List<string> SoftSolvers(string? flag, bool anySoft, bool allTets, string path)
+    {
+        if (flag == null) return anySoft && allTets ? new List<string> { "xpbd", "newton" } : new List<string> { "xpbd" };
+        var list = new List<string>();
+        foreach (string name in flag.Split(','))
+        {
+            string n = name.Trim();
+            if (n != "xpbd" && n != "newton") throw new UsageException($"--soft-solver: unknown solver '{n}' (expected xpbd or newton)");
+            if (n == "newton" && !allTets) throw new UsageException($"--soft-solver: newton solves tetrahedra; {path} has a cloth (shell) body");
+            if (!list.Contains(n)) list.Add(n);
+        }
+        if (list.Count == 0) throw new UsageException("--soft-solver: expected xpbd, newton or both");
+        return list;
     }
 
     static List<int> DynamicBodies(SceneInstance scene)
@@ -177,7 +202,8 @@ static class SweepCommand
               .Append(Opt(p.MaxJointError)).Append(',')
               .Append(Opt(p.ReferenceError)).Append(',')
               .Append(SceneSetup.F(p.EnergyDrift)).Append(',')
-              .Append(Opt(p.VolumeError)).Append('\n');
+              .Append(Opt(p.VolumeError)).Append(',')
+              .Append(p.SoftSolver).Append('\n');
         return sb.ToString();
     }
 

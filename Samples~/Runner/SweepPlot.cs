@@ -17,6 +17,7 @@ static class SweepPlot
     const double Width = 760, Height = 500, Left = 80, Right = 170, Top = 40, Bottom = 60;
 
     static readonly Dictionary<SolverType, string> Colours = new() { [SolverType.Pgs] = "#d62728", [SolverType.Tgs] = "#1f77b4" };
+    static readonly Dictionary<SolverType, string> NewtonColours = new() { [SolverType.Pgs] = "#9467bd", [SolverType.Tgs] = "#ff7f0e" };
 
     public static string Svg(string title, string errorName, IReadOnlyList<SweepPoint> points, Func<SweepPoint, double> error)
     {
@@ -65,13 +66,15 @@ static class SweepPlot
         svg.Append(Inv($"<text transform=\"translate(18 {Top + plotH / 2}) rotate(-90)\" text-anchor=\"middle\">{Escape(errorName)}{(y.Log ? " (log)" : "")}</text>\n"));
 
         double legendY = Top + 10;
-        foreach (SolverType solver in new[] { SolverType.Pgs, SolverType.Tgs })
+        // One series per rigid solver and soft solver (the soft solver only where the scene has soft bodies).
+        var series = new List<(SolverType Solver, string Soft)>();
+        foreach (SweepPoint p in points) if (!series.Contains((p.Solver, p.SoftSolver))) series.Add((p.Solver, p.SoftSolver));
+        foreach ((SolverType solver, string soft) in series)
         {
             var mine = new List<int>();
-            for (int i = 0; i < points.Count; i++) if (points[i].Solver == solver) mine.Add(i);
-            if (mine.Count == 0) continue;
+            for (int i = 0; i < points.Count; i++) if (points[i].Solver == solver && points[i].SoftSolver == soft) mine.Add(i);
             mine.Sort((a, b) => xs[a].CompareTo(xs[b]));
-            string colour = Colours[solver];
+            string colour = soft == "newton" ? NewtonColours[solver] : Colours[solver];
             var line = new StringBuilder();
             foreach (int i in mine) line.Append(Inv($"{Px(xs[i]):F1},{Py(ys[i]):F1} "));
             svg.Append($"<polyline fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.5\" points=\"{line.ToString().TrimEnd()}\"/>\n");
@@ -80,7 +83,7 @@ static class SweepPlot
                 svg.Append(Inv($"<circle cx=\"{Px(xs[i]):F1}\" cy=\"{Py(ys[i]):F1}\" r=\"3.5\" fill=\"{colour}\"><title>{Describe(points[i])}, error {error(points[i]):G4}</title></circle>\n"));
                 svg.Append(Inv($"<text x=\"{Px(xs[i]) + 5:F1}\" y=\"{Py(ys[i]) - 5:F1}\" font-size=\"9\" fill=\"{colour}\">{Setting(points[i])}</text>\n"));
             }
-            string name = solver == SolverType.Pgs ? "PGS" : "TGS";
+            string name = (solver == SolverType.Pgs ? "PGS" : "TGS") + (soft.Length > 0 ? (soft == "newton" ? ", soft Newton" : ", soft XPBD") : "");
             svg.Append(Inv($"<line x1=\"{Width - Right + 15}\" y1=\"{legendY}\" x2=\"{Width - Right + 40}\" y2=\"{legendY}\" stroke=\"{colour}\" stroke-width=\"2\"/>\n"));
             svg.Append(Inv($"<text x=\"{Width - Right + 46}\" y=\"{legendY + 4}\">{name}</text>\n"));
             legendY += 20;
@@ -110,7 +113,7 @@ static class SweepPlot
     static string Setting(SweepPoint p) => p.Solver == SolverType.Tgs ? $"{p.Iterations}x{p.Substeps}" : $"{p.Iterations}";
 
     static string Describe(SweepPoint p) =>
-        $"{(p.Solver == SolverType.Pgs ? "pgs" : "tgs")} {p.Iterations} iterations x {p.Substeps} substeps: {p.MsPerStep:G4} ms/step";
+        $"{(p.Solver == SolverType.Pgs ? "pgs" : "tgs")} {p.Iterations} iterations x {p.Substeps} substeps{(p.SoftSolver.Length > 0 ? ", soft " + p.SoftSolver : "")}: {p.MsPerStep:G4} ms/step";
 
     static string Label(double v) => v.ToString("G3", CultureInfo.InvariantCulture);
 

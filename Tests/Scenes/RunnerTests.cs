@@ -199,19 +199,39 @@ namespace Fulcrum.Tests.Scenes
         }
 
         [Test]
-        public void Soft_sweep_settings_reach_the_xpbd_solver_and_the_soft_reference_row_has_zero_error()
+        public void Soft_sweep_settings_reach_the_xpbd_solver_and_finer_settings_land_nearer_the_reference()
         {
             string outDir = Path.Combine(_dir, "soft-sweep");
-            (int code, _, string error) = Fulcrum("sweep", Scene("jelly"), "--steps", "30", "--solver", "tgs",
-                "--iterations", "1,2", "--substeps", "4,60", "--out", outDir);
+            (int code, string output, string error) = Fulcrum("sweep", Scene("jelly"), "--steps", "10", "--solver", "tgs",
+                "--iterations", "1,2", "--substeps", "4,60", "--soft-solver", "xpbd", "--out", outDir);
+            Assert.That((code, error), Is.EqualTo((0, "")));
+            Assert.That(output, Does.Contain("soft bodies Newton 60 substeps x 2 iterations"), "a tet scene's reference is the converged Newton run");
+            string[] rows = Lines(File.ReadAllText(Path.Combine(outDir, "sweep.csv")));
+            Assert.That(rows[0], Does.EndWith(",softSolver"));
+            string[] coarse = rows[1].Split(','), fine = rows[4].Split(',');
+            Assert.That((coarse[1], coarse[2], fine[1], fine[2], coarse[10], fine[10]), Is.EqualTo(("1", "4", "2", "60", "xpbd", "xpbd")));
+            // The jelly scene's rigid bodies are static, so only the soft settings differ.
+            Assert.That(F(coarse[7]), Is.GreaterThan(F(fine[7])), "60 substeps land nearer the converged reference than 4");
+            Assert.That(F(coarse[9]), Is.GreaterThan(0f), "volume error applies to soft scenes");
+        }
+
+        [Test]
+        public void Soft_sweep_compares_both_solvers_and_newton_reaches_the_stiff_bar_reference()
+        {
+            string outDir = Path.Combine(_dir, "stiff-sweep");
+            (int code, _, string error) = Fulcrum("sweep", Scene("stiff-bar"), "--steps", "30", "--solver", "tgs",
+                "--iterations", "1,2", "--substeps", "1,10,60", "--out", outDir);
             Assert.That((code, error), Is.EqualTo((0, "")));
             string[] rows = Lines(File.ReadAllText(Path.Combine(outDir, "sweep.csv")));
-            string[] coarse = rows[1].Split(','), reference = rows[4].Split(',');
-            Assert.That((coarse[1], coarse[2], reference[1], reference[2]), Is.EqualTo(("1", "4", "2", "60")));
-            // The jelly scene's rigid bodies are static, so only the soft settings differ.
-            Assert.That(F(reference[7]), Is.EqualTo(0f), "2 iterations x 60 substeps is the soft reference itself");
-            Assert.That(F(coarse[7]), Is.GreaterThan(1e-3f), "4 substeps lands somewhere else");
-            Assert.That(F(coarse[9]), Is.GreaterThan(0f), "volume error applies to soft scenes");
+            Assert.That(rows.Length, Is.EqualTo(1 + 12), "both soft solvers by default on a tet scene");
+            string[] Row(string soft, string it, string sub) => rows.Skip(1).Select(r => r.Split(',')).Single(c => c[10] == soft && c[1] == it && c[2] == sub);
+            Assert.That(F(Row("newton", "2", "60")[7]), Is.EqualTo(0f), "Newton 2 x 60 is the reference itself");
+            float newtonDefault = F(Row("newton", "1", "1")[7]), xpbdDefault = F(Row("xpbd", "1", "10")[7]);
+            TestContext.Out.WriteLine($"stiff-bar sweep: reference error Newton 1x1 {newtonDefault:E2} m, XPBD 1x10 {xpbdDefault:E2} m");
+            Assert.That(newtonDefault, Is.LessThan(0.01f * xpbdDefault), "on the stiff bar Newton at its default is 100x nearer than XPBD at its default");
+            Assert.That(File.ReadAllText(Path.Combine(outDir, "sweep.svg")), Does.Contain("soft Newton").And.Contain("soft XPBD"));
+            (code, _, error) = Fulcrum("sweep", Scene("stiff-bar"), "--soft-solver", "fem", "--out", outDir);
+            Assert.That((code, error.Trim()), Is.EqualTo((Cli.ExitUsage, "fulcrum: error: --soft-solver: unknown solver 'fem' (expected xpbd or newton)")));
         }
 
         [Test]
@@ -222,7 +242,7 @@ namespace Fulcrum.Tests.Scenes
                 "--iterations", "2,16", "--substeps", "1,8", "--out", outDir);
             Assert.That((code, error), Is.EqualTo((0, "")));
             string[] rows = Lines(File.ReadAllText(Path.Combine(outDir, "sweep.csv")));
-            Assert.That(rows[0], Is.EqualTo("solver,iterations,substeps,dt,msPerStep,maxPenetration,maxJointError,referenceError,energyDrift,volumeError"));
+            Assert.That(rows[0], Is.EqualTo("solver,iterations,substeps,dt,msPerStep,maxPenetration,maxJointError,referenceError,energyDrift,volumeError,softSolver"));
             Assert.That(rows.Skip(1).Select(r => string.Join(",", r.Split(',').Take(4))), Is.EqualTo(new[]
             {
                 "pgs,2,1,0.016666668", "pgs,16,1,0.016666668",
