@@ -51,7 +51,7 @@ namespace Fulcrum.Tests.SoftScenes
         /// optionally guided vertically by a prismatic joint; optionally tilted at the start.
         /// Measures the cube's height between its top and bottom centre over the run.
         /// </summary>
-        internal static PlateRun RunPlate(float youngs, float ratio, float strain, int steps, bool guided = false, float tiltDeg = 0)
+        internal static PlateRun RunPlate(float youngs, float ratio, float strain, int steps, bool guided = false, float tiltDeg = 0, bool rampLoad = false)
         {
             var probe = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, 0.3f, 1000f);
             float area = Width * Width;
@@ -77,6 +77,9 @@ namespace Fulcrum.Tests.SoftScenes
             float startEnergy = Energy(w, plate, cube), highest = startEnergy;
             for (int n = 0; n < steps; n++)
             {
+                // A load applied at once overshoots to about twice its static strain (a mass set on
+                // a spring); ramping gravity over 2 s applies it quasi-statically.
+                if (rampLoad) w.Gravity = new Vector3(0, -9.81f * MathF.Min(1f, (n + 1) / 120f), 0);
                 w.Step(1 / 60f);
                 cube.ComputeElementJ(j);
                 foreach (float x in j) run.MinJ = MathF.Min(run.MinJ, x);
@@ -119,14 +122,14 @@ namespace Fulcrum.Tests.SoftScenes
 
         [TestCase(0.20f)]
         [TestCase(0.30f)]
-        [TestCase(0.35f)]
-        public void A_guided_plate_compresses_the_cube_to_the_closed_form_at_large_strains(float strain)
+        [TestCase(0.40f)]
+        public void A_guided_plate_loaded_gradually_compresses_the_cube_to_the_closed_form_at_large_strains(float strain)
         {
-            PlateRun r = RunPlate(1e5f, 100, strain, 360, guided: true);
+            PlateRun r = RunPlate(1e5f, 100, strain, 480, guided: true, rampLoad: true);
             TestContext.Out.WriteLine($"guided, strain {r.Strain:F4} closed form {r.Expected:F4} ({100 * (r.Strain / r.Expected - 1):F1} %), min J {r.MinJ:F3}, late speed {r.LateSpeed:F4} m/s");
             Assert.That(r.Strain, Is.EqualTo(r.Expected).Within(0.06f * r.Expected));
-            Assert.That(r.MinJ, Is.GreaterThan(0.05f), "no element inverts (the corner tets reach J = 0.10 at 35 %)");
-            Assert.That(r.LateSpeed, Is.LessThan(0.1f), "settling (at 30-35 % the last quarter still moves at 4-5 cm/s)");
+            Assert.That(r.MinJ, Is.GreaterThan(0.3f), "no element inverts (0.53 at 40 %; a static clamped-face solve of this mesh gives 0.57)");
+            Assert.That(r.LateSpeed, Is.LessThan(0.02f), "at rest");
         }
 
         [Test]
@@ -178,6 +181,17 @@ namespace Fulcrum.Tests.SoftScenes
             Assert.That(lowest, Is.GreaterThan(0.15f), "the crate stops in the upper half of the slab");
             Assert.That(minJ, Is.GreaterThan(0.5f), "no element inverts");
             Assert.That(run.World.GetBody(crate).LinearVelocity.Length(), Is.LessThan(0.03f), "at rest on the slab");
+        }
+
+        [Test]
+        public void A_guided_plate_dropped_at_once_overshoots_but_no_element_inverts_up_to_35_percent()
+        {
+            // The same load applied at once: the cube swings to about twice its static strain
+            // before it settles (why 40 % applied at once collapses the 4 x 4 x 4 corner tets).
+            PlateRun r = RunPlate(1e5f, 100, 0.35f, 360, guided: true);
+            TestContext.Out.WriteLine($"guided, dropped: strain {r.Strain:F4} closed form {r.Expected:F4}, min J {r.MinJ:F3}");
+            Assert.That(r.Strain, Is.EqualTo(r.Expected).Within(0.06f * r.Expected));
+            Assert.That(r.MinJ, Is.GreaterThan(0.05f));
         }
     }
 }
