@@ -67,8 +67,12 @@ namespace Fulcrum
             Integrator.IntegratePositions(Bodies, _freeBodies, 0, free, dt);
 
             if (!constrained) return;
-            if (_solvedInStep.Length < Bodies.SlotCount) Array.Resize(ref _solvedInStep, Math.Max(Bodies.SlotCount, 2 * _solvedInStep.Length));
-            for (int k = 1; k < _solverContext.BodyCount; k++) _solvedInStep[_solverContext.BodySlot[k]] = _stepIndex + 1;
+            if (SoftBodyStage != null && SoftBodyStage.HasWork)
+            {
+                // Only the soft-body stage asks (IntegratorSubsteps): a world without it skips this pass.
+                if (_solvedInStep.Length < Bodies.SlotCount) Array.Resize(ref _solvedInStep, Math.Max(Bodies.SlotCount, 2 * _solvedInStep.Length));
+                for (int k = 1; k < _solverContext.BodyCount; k++) _solvedInStep[_solverContext.BodySlot[k]] = _stepIndex + 1;
+            }
             StatMaxJointError = MathF.Max(StatMaxJointError, solver.Step(_solverContext, _islands, dt));
             CollectBrokenJoints();
         }

@@ -69,13 +69,17 @@ namespace Fulcrum
         void BeginStep(float dt)
         {
             BodyStorage b = Bodies;
+            bool soft = SoftBodyStage != null && SoftBodyStage.HasWork;
             for (int k = 0; k < b.ActiveCount; k++)
             {
                 int i = b.Active[k];
                 b.PreviousPosition[i] = b.Position[i];
                 b.PreviousRotation[i] = b.Rotation[i];
-                b.StartLinearVelocity[i] = b.LinearVelocity[i];
-                b.StartAngularVelocity[i] = b.AngularVelocity[i];
+                if (soft)
+                {
+                    b.StartLinearVelocity[i] = b.LinearVelocity[i];
+                    b.StartAngularVelocity[i] = b.AngularVelocity[i];
+                }
                 if (b.Type[i] != BodyType.Kinematic) continue;
                 if (b.HasKinematicTarget[i])
                 {
