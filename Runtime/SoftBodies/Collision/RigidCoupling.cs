@@ -47,7 +47,6 @@ namespace Fulcrum.SoftBodies
         Vector3[] _angularCorrection = Array.Empty<Vector3>();
         int _count;
         float _dt;
-        int _substeps;
         World _world = null!;
 
         /// <summary>Forgets last step's bodies; the coming step is <paramref name="dt"/> long.</summary>
@@ -57,7 +56,6 @@ namespace Fulcrum.SoftBodies
             BodyStorage bodies = world.Bodies;
             _bodies = bodies;
             _dt = dt;
-            _substeps = 1;
             if (_entryOfSlot.Length < bodies.SlotCount)
             {
                 int old = _entryOfSlot.Length;
@@ -126,7 +124,6 @@ namespace Fulcrum.SoftBodies
                 _correction[e] *= invN;
                 _angularCorrection[e] *= invN;
             }
-            _substeps = substeps;
         }
 
         /// <summary>

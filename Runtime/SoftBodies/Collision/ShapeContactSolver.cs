@@ -31,7 +31,7 @@ namespace Fulcrum.SoftBodies
         // and whether that happened in this substep or the last (the Newton solver holds such
         // vertices along the normal, see ImplicitNewtonSolver).
         Vector3[] _normal = Array.Empty<Vector3>();
-        bool[] _held0 = Array.Empty<bool>(), _held1 = Array.Empty<bool>();
+        bool[] _holdNow = Array.Empty<bool>(), _holdLast = Array.Empty<bool>();
 
         /// <summary>Vertex-triangle pairs gathered against triangle meshes for this step.</summary>
         public int MeshPairCount => _meshes.Count;
@@ -99,7 +99,7 @@ namespace Fulcrum.SoftBodies
         /// <summary>Writes what the next step reads: which vertices an immovable shape held in the last substep, and the normals.</summary>
         internal void WriteState(StateWriter w)
         {
-            w.WriteArray(_held0);
+            w.WriteArray(_holdNow);
             w.WriteArray(_normal);
         }
 
@@ -111,8 +111,8 @@ namespace Fulcrum.SoftBodies
             if (held.Length != 0 && held.Length < vertexCount) throw r.Error($"soft contact holds for {held.Length} of {vertexCount} vertices.");
             return () =>
             {
-                _held0 = held;
-                _held1 = new bool[held.Length];
+                _holdNow = held;
+                _holdLast = new bool[held.Length];
                 _normal = normal;
                 if (_pushed.Length != held.Length)
                 {
@@ -126,7 +126,7 @@ namespace Fulcrum.SoftBodies
         public bool Touches(int i, out Vector3 normal)
         {
             normal = i < _normal.Length ? _normal[i] : default;
-            return i < _held0.Length && (_held0[i] || _held1[i]);
+            return i < _holdNow.Length && (_holdNow[i] || _holdLast[i]);
         }
 
         /// <summary>Starts a substep: no vertex has been pushed or held yet.</summary>
@@ -137,13 +137,13 @@ namespace Fulcrum.SoftBodies
                 _pushed = new float[vertexCount];
                 _held = new float[vertexCount];
                 _normal = new Vector3[vertexCount];
-                _held0 = new bool[vertexCount];
-                _held1 = new bool[vertexCount];
+                _holdNow = new bool[vertexCount];
+                _holdLast = new bool[vertexCount];
             }
-            bool[] last = _held1;
-            _held1 = _held0;
-            _held0 = last;
-            Array.Clear(_held0, 0, vertexCount);
+            bool[] last = _holdLast;
+            _holdLast = _holdNow;
+            _holdNow = last;
+            Array.Clear(_holdNow, 0, vertexCount);
             Array.Clear(_pushed, 0, vertexCount);
             Array.Clear(_held, 0, vertexCount);
         }
@@ -183,7 +183,7 @@ namespace Fulcrum.SoftBodies
                         if (wb == 0f)
                         {
                             _normal[i] = n;
-                            _held0[i] = true;
+                            _holdNow[i] = true;
                         }
                     }
 

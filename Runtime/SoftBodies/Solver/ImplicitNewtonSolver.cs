@@ -71,9 +71,6 @@ namespace Fulcrum.SoftBodies
             _reach = 0.25f * shortest;
         }
 
-        /// <summary>Half-bandwidth of the system in DOFs (for the documentation of cost).</summary>
-        public int Band => _band;
-
         ref double At(int row, int col) => ref _matrix[row * (_band + 1) + col - row + _band];
 
         /// <summary>One Newton step towards the minimum of G for a substep of <paramref name="h"/> with inertial targets <paramref name="y"/>.</summary>

@@ -116,15 +116,6 @@ namespace Fulcrum
             return array;
         }
 
-        /// <summary>Reads an array that may have been written as null.</summary>
-        public T[]? ReadArrayOrNull<T>(string what) where T : unmanaged
-        {
-            int save = _at;
-            if (Read<int>(what + " length") == -1) return null;
-            _at = save;
-            return ReadArray<T>(what);
-        }
-
         /// <summary>Reads an array and checks that it has exactly <paramref name="length"/> elements.</summary>
         public T[] ReadArrayExactly<T>(string what, int length) where T : unmanaged
         {
