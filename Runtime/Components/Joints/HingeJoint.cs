@@ -23,11 +23,10 @@ namespace Fulcrum.Components
 
     /// <summary>
     /// A hinge about <see cref="Joint.axis"/> through <see cref="Joint.anchor"/>, with optional
-    /// limits and motor (Unity's HingeJoint). <see cref="angle"/> is 0 at the pose the joint was
-    /// built in. Departure from Unity: no JointSpring (Fulcrum's hinge spring is a frequency,
-    /// not N m/rad; use a motor or a DistanceJoint spring).
+    /// limits, motor and spring (Unity's HingeJoint). <see cref="angle"/> is 0 at the pose the
+    /// joint was built in.
     /// </summary>
-    public sealed class HingeJoint : Joint
+    public sealed partial class HingeJoint : Joint
     {
         bool _useLimits, _useMotor;
         JointLimits _limits;
@@ -91,6 +90,7 @@ namespace Fulcrum.Components
                 def.MotorSpeed = _motor.targetVelocity * (MathF.PI / 180f);
                 def.MaxMotorTorque = _motor.force;
             }
+            ConfigureSpring(ref def);
         }
 
         void PushLimits()

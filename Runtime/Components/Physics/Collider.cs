@@ -13,7 +13,7 @@ namespace Fulcrum.Components
     /// contacts it had end). Sizes must be &gt; 0: a zero or negative size throws
     /// (Unity accepts flat boxes; Fulcrum's shapes need volume).
     /// </summary>
-    public abstract class Collider : Component
+    public abstract partial class Collider : Component
     {
         bool _enabled = true;
         bool _isTrigger;
@@ -141,7 +141,7 @@ namespace Fulcrum.Components
             ShapeDef def = ShapeDef.Of(BuildGeometry());
             def.IsSensor = _isTrigger;
             def.Layer = entity.layer;
-            def.CollidesWith = s.CollisionMaskOf(entity.layer);
+            def.CollidesWith = rb != null && !rb.detectCollisions ? 0u : s.CollisionMaskOf(entity.layer);
             def.UserData = 0;
             WriteMaterial(ref def);
             if (rb != null)

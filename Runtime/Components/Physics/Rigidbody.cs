@@ -10,12 +10,12 @@ namespace Fulcrum.Components
     /// entity and on child entities without a Rigidbody of their own form its shape (a
     /// compound); their volumes give the centre of mass and the inertia, scaled to
     /// <see cref="mass"/>, as in Unity.
-    /// Departures from Unity: there is no angular speed cap (maxAngularVelocity), no
-    /// sleepThreshold per body (see <see cref="WorldSettings"/>), constraints are enforced
+    /// Departures from Unity: no angular speed cap unless <see cref="maxAngularVelocity"/> is
+    /// set (Unity's default is 7 rad/s), no sleepThreshold per body (see <see cref="WorldSettings"/>), constraints are enforced
     /// as <see cref="constraints"/> describes, and setting a property from inside
     /// <see cref="World.Step"/> (a Core callback) throws instead of corrupting the step.
     /// </summary>
-    public sealed class Rigidbody : Component
+    public sealed partial class Rigidbody : Component
     {
         BodyHandle _body;
         float _mass = 1f;

@@ -150,11 +150,15 @@ namespace Fulcrum.Components
 
         void BeforeStepConstraints()
         {
+            for (int k = 0; k < _joints.Count; k++)
+                if (_joints[k] is HingeJoint h && !h.isDestroyed && h.HasSpringTarget) h.ApplySpringTarget();
             BodyStorage b = _world.Bodies;
             for (int k = 0; k < _rigidbodies.Count; k++)
             {
                 Rigidbody rb = _rigidbodies[k];
-                if (!rb.HasBody || rb.constraints == RigidbodyConstraints.None || rb.isKinematic) continue;
+                if (!rb.HasBody || rb.isKinematic) continue;
+                if (rb.HasSpeedCaps) rb.ClampSpeeds(b, rb.body.Index);
+                if (rb.constraints == RigidbodyConstraints.None) continue;
                 AxisFreeze.BeforeStep(b, rb.body.Index, rb.constraints, out rb.FreezePosition, out rb.FreezeRotation);
             }
         }
@@ -169,6 +173,7 @@ namespace Fulcrum.Components
                 int i = rb.body.Index;
                 if (rb.constraints != RigidbodyConstraints.None && !rb.isKinematic)
                     AxisFreeze.AfterStep(b, i, rb.constraints, rb.FreezePosition, rb.FreezeRotation);
+                if (rb.HasSpeedCaps && !rb.isKinematic) rb.ClampSpeeds(b, i);
                 rb.WriteTransform(new Pose(b.Position[i], b.Rotation[i]));
             }
         }

@@ -92,14 +92,14 @@ namespace Fulcrum.Components
             return n;
         }
 
-        QueryFilter Filter(int layerMask, QueryTriggerInteraction q)
+        internal QueryFilter Filter(int layerMask, QueryTriggerInteraction q)
         {
             QueryFilter f = QueryFilter.Layers(unchecked((uint)layerMask));
             f.IncludeSensors = q == QueryTriggerInteraction.Collide || (q == QueryTriggerInteraction.UseGlobal && queriesHitTriggers);
             return f;
         }
 
-        bool ToHit(ShapeHandle shape, Vector3 point, Vector3 normal, float distance, out RaycastHit hit)
+        internal bool ToHit(ShapeHandle shape, Vector3 point, Vector3 normal, float distance, out RaycastHit hit)
         {
             Collider? c = GetCollider(shape);
             hit = c == null ? default : new RaycastHit { point = point, normal = normal, distance = distance, collider = c };

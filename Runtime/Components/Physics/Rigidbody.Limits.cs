@@ -1,0 +1,84 @@
+using System;
+using System.Numerics;
+
+namespace Fulcrum.Components
+{
+    public sealed partial class Rigidbody
+    {
+        float _maxLinearVelocity = float.PositiveInfinity;
+        float _maxAngularVelocity = float.PositiveInfinity;
+        bool _detectCollisions = true;
+
+        /// <summary>
+        /// The largest speed of the centre of mass, m/s (&gt; 0; infinity = no cap beyond the
+        /// world's <see cref="WorldSettings.MaxLinearSpeed"/>). Enforced before and after each
+        /// step, so the body never leaves a step faster. Default: infinity (Unity: 1e16).
+        /// </summary>
+        public float maxLinearVelocity
+        {
+            get => _maxLinearVelocity;
+            set
+            {
+                CheckCap(value, nameof(maxLinearVelocity));
+                ThrowIfStepping(nameof(maxLinearVelocity));
+                _maxLinearVelocity = value;
+            }
+        }
+
+        /// <summary>
+        /// The largest angular speed, rad/s (&gt; 0; infinity = no cap). Enforced before and after
+        /// each step. Default: infinity. Departure from Unity, whose default is 7 rad/s (50 from
+        /// Unity 6): Fulcrum does not slow fast spinners unless asked; set 7 to match an old project.
+        /// </summary>
+        public float maxAngularVelocity
+        {
+            get => _maxAngularVelocity;
+            set
+            {
+                CheckCap(value, nameof(maxAngularVelocity));
+                ThrowIfStepping(nameof(maxAngularVelocity));
+                _maxAngularVelocity = value;
+            }
+        }
+
+        /// <summary>
+        /// Whether the body's colliders touch anything (Unity's detectCollisions): false keeps
+        /// them for mass and for queries but gives them no contacts or trigger overlaps; the
+        /// contacts they had end, and the body wakes. Default: true.
+        /// </summary>
+        public bool detectCollisions
+        {
+            get => _detectCollisions;
+            set
+            {
+                ThrowIfStepping(nameof(detectCollisions));
+                if (value == _detectCollisions) return;
+                _detectCollisions = value;
+                Collider[] attached = Colliders.ToArray();
+                foreach (Collider c in attached) c.Rebuild();
+                if (HasBody) World.GetBody(_body).WakeUp(); // a resting body must notice its support is gone
+            }
+        }
+
+        internal bool HasSpeedCaps => _maxLinearVelocity < float.PositiveInfinity || _maxAngularVelocity < float.PositiveInfinity;
+
+        // Scales each velocity down to its cap (direction kept).
+        internal void ClampSpeeds(BodyStorage b, int i)
+        {
+            b.LinearVelocity[i] = Cap(b.LinearVelocity[i], _maxLinearVelocity);
+            b.AngularVelocity[i] = Cap(b.AngularVelocity[i], _maxAngularVelocity);
+        }
+
+        static Vector3 Cap(Vector3 v, float max)
+        {
+            float s = v.LengthSquared();
+            return s > max * max ? v * (max / MathF.Sqrt(s)) : v;
+        }
+
+        void CheckCap(float value, string field)
+        {
+            if (!(value > 0) || float.IsNaN(value))
+                throw new ArgumentException($"{this}: {field} must be > 0 (infinity for no cap), got {value}.", field);
+        }
+    }
+}
