@@ -113,11 +113,16 @@ namespace Fulcrum.Components
             if (_enabled) Build();
         }
 
-        internal override void Deactivate() => Remove();
+        internal override void Deactivate()
+        {
+            Remove();
+            scene.ForgetIgnores(this);
+        }
 
         internal override void Teardown()
         {
             _material?.Users.Remove(this);
+            scene.ForgetIgnores(this);
         }
 
         internal void OnLayerChanged() => Rebuild();
@@ -166,6 +171,7 @@ namespace Fulcrum.Components
                 SeenTransformVersion = transform.HierarchyVersion;
             }
             s.MapShape(_shape, this);
+            s.ReapplyIgnores(this);
         }
 
         internal void Remove()

@@ -62,6 +62,12 @@ namespace Fulcrum.Collision
             if (!tree.WasMoved(key >> 1)) Buffer(key);
         }
 
+        /// <summary>Queues a proxy for a pair search without moving it (a pair the filter refused may now be accepted).</summary>
+        public void Requeue(int key)
+        {
+            if (!TreeOf(key).WasMoved(key >> 1)) Buffer(key);
+        }
+
         void Buffer(int key)
         {
             TreeOf(key).SetMoved(key >> 1, true);

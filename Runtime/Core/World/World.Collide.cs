@@ -85,6 +85,7 @@ namespace Fulcrum
             BroadPhase.DestroyProxy(Shapes.ProxyId[shape]);
             Shapes.ProxyId[shape] = -1;
             OnCcdShapeRemoved(Shapes.Body[shape]);
+            ForgetIgnoredPairs(shape);
         }
 
         // The shape's world pose: this step's broad-phase copy for awake moving shapes, computed
@@ -149,6 +150,7 @@ namespace Fulcrum
             if (sensor ? ta == BodyType.Static && tb == BodyType.Static : ta != BodyType.Dynamic && tb != BodyType.Dynamic) return;
             if ((s.CollidesWith[shapeA] & (1u << s.Layer[shapeB])) == 0 || (s.CollidesWith[shapeB] & (1u << s.Layer[shapeA])) == 0) return;
             if (!sensor && JointBlocksCollision(bodyA, bodyB)) return;
+            if (IgnoresPair(shapeA, shapeB)) return;
             ShapeType ka = s.Geometry[shapeA].Type, kb = s.Geometry[shapeB].Type;
             if (!CollisionTable.Has(ka, kb)) return;
             if (ContactGraph.Find(shapeA, shapeB) >= 0) return;

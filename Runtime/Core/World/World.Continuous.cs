@@ -124,6 +124,7 @@ namespace Fulcrum
             int bodyA = s.Body[shape], bodyB = s.Body[other];
             if (bodyA == bodyB || s.IsSensor[other]) return 1;
             if ((s.CollidesWith[shape] & (1u << s.Layer[other])) == 0 || (s.CollidesWith[other] & (1u << s.Layer[shape])) == 0) return 1;
+            if (IgnoresPair(shape, other)) return 1;
             ShapeGeometry g = s.Geometry[shape];
             Pose local = s.LocalPose[shape];
             ShapeGeometry target = s.Geometry[other];

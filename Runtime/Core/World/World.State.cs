@@ -42,6 +42,10 @@ namespace Fulcrum
             BroadPhase.Save(w);
             ContactGraph.Save(w);
 
+            w.Section("IGNR");
+            IgnoredPairs.Save(w);
+            w.WriteArray(IgnoredPairList.ToArray());
+
             w.Section("STEP");
             w.WritePool(Contacts.Source, Contacts.ManifoldCount);
             w.WriteArray(_shapeMotion);
@@ -94,6 +98,17 @@ namespace Fulcrum
             ContactGraph graph = ContactGraph.Load(r);
             CheckLinks(r, bodies, shapes, graph);
 
+            r.Section("IGNR");
+            PairMap ignored = PairMap.Load(r, 1);
+            ulong[] ignoredList = r.ReadArray<ulong>("ignored pairs");
+            if (ignoredList.Length != ignored.Count) throw r.Error($"{ignoredList.Length} ignored pairs listed, {ignored.Count} in the map.");
+            foreach (ulong key in ignoredList)
+            {
+                int a = (int)(key >> 32), b = (int)(uint)key;
+                if (a < 0 || a >= b || b >= shapes.SlotCount || ignored.Find(key) < 0)
+                    throw r.Error($"an ignored pair names shapes {a} and {b} of {shapes.SlotCount}.");
+            }
+
             r.Section("STEP");
             int[] source = r.ReadPool<int>("step manifolds", out int manifoldCount);
             foreach (int m in new ReadOnlySpan<int>(source, 0, manifoldCount))
@@ -138,6 +153,8 @@ namespace Fulcrum
             Joints = joints;
             BroadPhase = broadPhase;
             ContactGraph = graph;
+            IgnoredPairs = ignored;
+            IgnoredPairList = new System.Collections.Generic.List<ulong>(ignoredList);
             Contacts.Pool = graph.Manifolds;
             Contacts.Source = source;
             Contacts.ManifoldCount = manifoldCount;
