@@ -12,13 +12,23 @@ namespace Fulcrum.Unity
         [Tooltip("Axis: 0 = x, 1 = y, 2 = z.")] public int direction = 1;
 
         /// <inheritdoc/>
-        protected override F.Collider Create(F.Entity shadow)
+        protected override F.Collider Create(F.Entity shadow) => shadow.AddComponent<F.CapsuleCollider>();
+
+        /// <inheritdoc/>
+        protected override void PushShape(F.Collider c)
         {
-            var c = shadow.AddComponent<F.CapsuleCollider>();
-            c.radius = radius;
-            c.height = height;
-            c.direction = direction;
-            return c;
+            var capsule = (F.CapsuleCollider)c;
+            capsule.radius = radius;
+            capsule.height = height;
+            capsule.direction = direction;
+        }
+
+        /// <inheritdoc/>
+        protected override void ClampFields()
+        {
+            radius = Mathf.Max(radius, Limits.MinShapeSize);
+            height = Mathf.Max(height, Limits.MinShapeSize);
+            direction = Mathf.Clamp(direction, 0, 2);
         }
     }
 }

@@ -4,7 +4,11 @@ using F = Fulcrum.Components;
 
 namespace Fulcrum.Unity
 {
-    /// <summary>The base of the Unity collider faces: creates the headless collider on the shadow entity when enabled.</summary>
+    /// <summary>
+    /// The base of the Unity collider faces: creates the headless collider on the shadow entity
+    /// when enabled, pushes inspector edits made in play mode (OnValidate), and answers Unity's
+    /// per-collider queries.
+    /// </summary>
     public abstract class FulcrumCollider : FulcrumComponent
     {
         [Tooltip("Reports overlaps (OnFulcrumTrigger*) with no physical response.")] public bool isTrigger;
@@ -13,27 +17,97 @@ namespace Fulcrum.Unity
         [Tooltip("Restitution in [0, 1].")] public float bounciness;
 
         F.Collider? _collider;
+        FulcrumWorld? _world;
 
         /// <summary>The headless collider (null while disabled).</summary>
         public F.Collider? Collider => _collider;
 
-        /// <summary>Adds the concrete headless collider and sets its size fields.</summary>
+        /// <summary>The rigidbody this collider belongs to (on this GameObject or a parent), or null for a static collider.</summary>
+        public FulcrumRigidbody? attachedRigidbody => GetComponentInParent<FulcrumRigidbody>();
+
+        /// <summary>Adds the concrete headless collider to the shadow entity.</summary>
         protected abstract F.Collider Create(F.Entity shadow);
+
+        /// <summary>Copies the size fields (validated by the headless collider) to <paramref name="c"/>.</summary>
+        protected abstract void PushShape(F.Collider c);
 
         void OnEnable()
         {
+            // A collider under a rigidbody whose OnEnable has not run yet still joins its body.
+            FulcrumRigidbody? rb = attachedRigidbody;
+            if (rb != null && rb.isActiveAndEnabled) rb.EnsureBody();
             _collider = Create(Shadow);
-            _collider.center = center.ToNumerics();
-            _collider.isTrigger = isTrigger;
-            if (friction != 0.6f || bounciness != 0f)
-                _collider.sharedMaterial = new F.PhysicsMaterial(name) { dynamicFriction = friction, bounciness = bounciness };
+            PushAll(_collider);
+            _world = FulcrumWorld.Instance;
+            _world.Register(_collider, this);
         }
+
+        void PushAll(F.Collider c)
+        {
+            PushShape(c);
+            c.center = center.ToNumerics();
+            c.isTrigger = isTrigger;
+            if (friction != 0.6f || bounciness != 0f)
+                c.sharedMaterial = new F.PhysicsMaterial(name) { dynamicFriction = friction, bounciness = bounciness };
+            else if (c.sharedMaterial != null && c.sharedMaterial.name == name)
+                c.sharedMaterial = null;
+        }
+
+        void OnValidate()
+        {
+            friction = Mathf.Max(friction, 0f);
+            bounciness = Mathf.Clamp01(bounciness);
+            ClampFields();
+            if (IsLive && _collider != null && !_collider.isDestroyed) PushAll(_collider);
+        }
+
+        /// <summary>Clamps the size fields to what the headless collider accepts (inspector edits).</summary>
+        protected virtual void ClampFields() { }
 
         void OnDisable()
         {
-            if (_collider != null && !_collider.isDestroyed) _collider.scene.DestroyImmediate(_collider);
+            if (_collider != null)
+            {
+                _world?.Unregister(_collider);
+                if (!_collider.isDestroyed) _collider.scene.DestroyImmediate(_collider);
+            }
             _collider = null;
             ReleaseShadow();
         }
+
+        /// <summary>This collider's own material (see <see cref="F.Collider.material"/>); null while disabled.</summary>
+        public F.PhysicsMaterial? material
+        {
+            get => _collider?.material;
+            set { if (_collider != null) _collider.material = value!; }
+        }
+
+        /// <summary>World bounds as of the last step, or an empty box while disabled.</summary>
+        public Bounds bounds
+        {
+            get
+            {
+                if (_collider == null || _collider.shape.IsNone) return new Bounds(transform.position, Vector3.zero);
+                Fulcrum.Mathematics.Aabb b = _collider.bounds;
+                return new Bounds(b.Center.ToUnity(), b.Size.ToUnity());
+            }
+        }
+
+        /// <summary>The ray's first hit with this collider alone (Unity's Collider.Raycast).</summary>
+        public bool Raycast(Ray ray, out FulcrumRaycastHit hitInfo, float maxDistance)
+        {
+            hitInfo = default;
+            if (_collider == null || !_collider.Raycast(new F.Ray(ray.origin.ToNumerics(), ray.direction.ToNumerics()), out F.RaycastHit hit, maxDistance)) return false;
+            hitInfo = FulcrumRaycastHit.From(hit);
+            return true;
+        }
+
+        /// <summary>The point of this collider closest to <paramref name="position"/>; the position itself when inside.</summary>
+        public Vector3 ClosestPoint(Vector3 position) =>
+            _collider != null ? _collider.ClosestPoint(position.ToNumerics()).ToUnity() : position;
+
+        /// <summary>The point of <see cref="bounds"/> closest to <paramref name="position"/>.</summary>
+        public Vector3 ClosestPointOnBounds(Vector3 position) =>
+            _collider != null ? _collider.ClosestPointOnBounds(position.ToNumerics()).ToUnity() : position;
     }
 }

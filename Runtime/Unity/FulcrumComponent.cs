@@ -12,8 +12,11 @@ namespace Fulcrum.Unity
         /// <summary>Removes the shadow entity when this was the GameObject's last Fulcrum component.</summary>
         protected void ReleaseShadow()
         {
-            FulcrumWorld? w = FindObjectOfType<FulcrumWorld>();
+            FulcrumWorld? w = FulcrumWorld.Current;
             if (w != null) w.Release(gameObject, this);
         }
+
+        /// <summary>True while play mode runs and the component is live: inspector edits (OnValidate) are then pushed to the headless component.</summary>
+        protected bool IsLive => Application.isPlaying && isActiveAndEnabled;
     }
 }

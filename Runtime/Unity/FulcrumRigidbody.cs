@@ -6,15 +6,16 @@ namespace Fulcrum.Unity
 {
     /// <summary>
     /// Unity face of <see cref="F.Rigidbody"/>: the inspector fields are copied to the headless
-    /// component when it is enabled; at run time use <see cref="Body"/> (or the forwarding
-    /// methods) so that every value is checked and documented in one place.
+    /// component when it is enabled and again when edited in play mode (OnValidate); at run time
+    /// the members below forward to <see cref="Body"/>, where every value is checked and
+    /// documented. Members Unity has and this face lacks are on <see cref="Body"/>.
     /// </summary>
     [DisallowMultipleComponent]
     public sealed class FulcrumRigidbody : FulcrumComponent
     {
         [Tooltip("Mass, kg (> 0).")] public float mass = 1f;
-        [Tooltip("Linear damping, 1/s.")] public float linearDamping;
-        [Tooltip("Angular damping, 1/s.")] public float angularDamping = 0.05f;
+        [Tooltip("Linear damping, 1/s (Unity 2021-2022: drag).")] public float linearDamping;
+        [Tooltip("Angular damping, 1/s (Unity 2021-2022: angularDrag).")] public float angularDamping = 0.05f;
         public bool useGravity = true;
         public bool isKinematic;
         public F.RigidbodyInterpolation interpolation = F.RigidbodyInterpolation.None;
@@ -26,17 +27,35 @@ namespace Fulcrum.Unity
         /// <summary>The headless rigidbody (null while disabled).</summary>
         public F.Rigidbody? Body => _body;
 
-        void OnEnable()
+        void OnEnable() => EnsureBody();
+
+        /// <summary>Creates the headless rigidbody if it is not there yet (joints call it: their OnEnable may run first).</summary>
+        internal F.Rigidbody EnsureBody()
         {
+            if (_body != null && !_body.isDestroyed) return _body;
             _body = Shadow.AddComponent<F.Rigidbody>();
-            _body.mass = mass;
-            _body.linearDamping = linearDamping;
-            _body.angularDamping = angularDamping;
-            _body.useGravity = useGravity;
-            _body.isKinematic = isKinematic;
-            _body.interpolation = interpolation;
-            _body.collisionDetectionMode = collisionDetectionMode;
-            _body.constraints = constraints;
+            Push(_body);
+            return _body;
+        }
+
+        void Push(F.Rigidbody b)
+        {
+            b.mass = mass;
+            b.linearDamping = linearDamping;
+            b.angularDamping = angularDamping;
+            b.useGravity = useGravity;
+            b.isKinematic = isKinematic;
+            b.interpolation = interpolation;
+            b.collisionDetectionMode = collisionDetectionMode;
+            b.constraints = constraints;
+        }
+
+        void OnValidate()
+        {
+            mass = Mathf.Max(mass, Limits.MinMass);
+            linearDamping = Mathf.Max(linearDamping, 0f);
+            angularDamping = Mathf.Max(angularDamping, 0f);
+            if (IsLive && _body != null && !_body.isDestroyed) Push(_body);
         }
 
         void OnDisable()
@@ -49,18 +68,48 @@ namespace Fulcrum.Unity
         /// <summary>See <see cref="F.Rigidbody.AddForce(System.Numerics.Vector3, Fulcrum.ForceMode)"/>.</summary>
         public void AddForce(Vector3 force, UnityEngine.ForceMode mode = UnityEngine.ForceMode.Force) => _body?.AddForce(force.ToNumerics(), mode.ToFulcrum());
 
+        /// <summary>See <see cref="F.Rigidbody.AddRelativeForce"/>.</summary>
+        public void AddRelativeForce(Vector3 force, UnityEngine.ForceMode mode = UnityEngine.ForceMode.Force) => _body?.AddRelativeForce(force.ToNumerics(), mode.ToFulcrum());
+
         /// <summary>See <see cref="F.Rigidbody.AddTorque"/>.</summary>
         public void AddTorque(Vector3 torque, UnityEngine.ForceMode mode = UnityEngine.ForceMode.Force) => _body?.AddTorque(torque.ToNumerics(), mode.ToFulcrum());
+
+        /// <summary>See <see cref="F.Rigidbody.AddRelativeTorque"/>.</summary>
+        public void AddRelativeTorque(Vector3 torque, UnityEngine.ForceMode mode = UnityEngine.ForceMode.Force) => _body?.AddRelativeTorque(torque.ToNumerics(), mode.ToFulcrum());
 
         /// <summary>See <see cref="F.Rigidbody.AddForceAtPosition"/>.</summary>
         public void AddForceAtPosition(Vector3 force, Vector3 position, UnityEngine.ForceMode mode = UnityEngine.ForceMode.Force) =>
             _body?.AddForceAtPosition(force.ToNumerics(), position.ToNumerics(), mode.ToFulcrum());
+
+        /// <summary>See <see cref="F.Rigidbody.AddExplosionForce"/>.</summary>
+        public void AddExplosionForce(float explosionForce, Vector3 explosionPosition, float explosionRadius, float upwardsModifier = 0f,
+            UnityEngine.ForceMode mode = UnityEngine.ForceMode.Force) =>
+            _body?.AddExplosionForce(explosionForce, explosionPosition.ToNumerics(), explosionRadius, upwardsModifier, mode.ToFulcrum());
 
         /// <summary>See <see cref="F.Rigidbody.MovePosition"/>.</summary>
         public void MovePosition(Vector3 position) => _body?.MovePosition(position.ToNumerics());
 
         /// <summary>See <see cref="F.Rigidbody.MoveRotation"/>.</summary>
         public void MoveRotation(Quaternion rotation) => _body?.MoveRotation(rotation.ToNumerics());
+
+        /// <summary>See <see cref="F.Rigidbody.Sleep"/>.</summary>
+        public void Sleep() => _body?.Sleep();
+
+        /// <summary>See <see cref="F.Rigidbody.WakeUp"/>.</summary>
+        public void WakeUp() => _body?.WakeUp();
+
+        /// <summary>See <see cref="F.Rigidbody.IsSleeping"/>.</summary>
+        public bool IsSleeping() => _body == null || _body.IsSleeping();
+
+        /// <summary>See <see cref="F.Rigidbody.SweepTest"/>; the hit is reported with the Unity collider.</summary>
+        public bool SweepTest(Vector3 direction, out FulcrumRaycastHit hitInfo, float maxDistance = Mathf.Infinity,
+            F.QueryTriggerInteraction queryTriggerInteraction = F.QueryTriggerInteraction.UseGlobal)
+        {
+            hitInfo = default;
+            if (_body == null || !_body.SweepTest(direction.ToNumerics(), out F.RaycastHit hit, maxDistance, queryTriggerInteraction)) return false;
+            hitInfo = FulcrumRaycastHit.From(hit);
+            return true;
+        }
 
         /// <summary>Velocity of the centre of mass, m/s.</summary>
         public Vector3 linearVelocity
@@ -69,11 +118,70 @@ namespace Fulcrum.Unity
             set { if (_body != null) _body.linearVelocity = value.ToNumerics(); }
         }
 
+        /// <summary>Unity 2021.3-2022's name of <see cref="linearVelocity"/>.</summary>
+        public Vector3 velocity
+        {
+            get => linearVelocity;
+            set => linearVelocity = value;
+        }
+
         /// <summary>Angular velocity, rad/s.</summary>
         public Vector3 angularVelocity
         {
             get => _body != null ? _body.angularVelocity.ToUnity() : Vector3.zero;
             set { if (_body != null) _body.angularVelocity = value.ToNumerics(); }
         }
+
+        /// <summary>Unity 2021.3-2022's name of <see cref="linearDamping"/> (and the inspector field).</summary>
+        public float drag
+        {
+            get => linearDamping;
+            set { linearDamping = value; if (_body != null) _body.linearDamping = value; }
+        }
+
+        /// <summary>Unity 2021.3-2022's name of <see cref="angularDamping"/> (and the inspector field).</summary>
+        public float angularDrag
+        {
+            get => angularDamping;
+            set { angularDamping = value; if (_body != null) _body.angularDamping = value; }
+        }
+
+        /// <summary>See <see cref="F.Rigidbody.freezeRotation"/>.</summary>
+        public bool freezeRotation
+        {
+            get => (constraints & F.RigidbodyConstraints.FreezeRotation) == F.RigidbodyConstraints.FreezeRotation;
+            set
+            {
+                constraints = value ? constraints | F.RigidbodyConstraints.FreezeRotation : constraints & ~F.RigidbodyConstraints.FreezeRotation;
+                if (_body != null) _body.constraints = constraints;
+            }
+        }
+
+        /// <summary>See <see cref="F.Rigidbody.maxAngularVelocity"/> (default: no cap; Unity's is 7 rad/s).</summary>
+        public float maxAngularVelocity
+        {
+            get => _body != null ? _body.maxAngularVelocity : float.PositiveInfinity;
+            set { if (_body != null) _body.maxAngularVelocity = value; }
+        }
+
+        /// <summary>See <see cref="F.Rigidbody.maxLinearVelocity"/>.</summary>
+        public float maxLinearVelocity
+        {
+            get => _body != null ? _body.maxLinearVelocity : float.PositiveInfinity;
+            set { if (_body != null) _body.maxLinearVelocity = value; }
+        }
+
+        /// <summary>See <see cref="F.Rigidbody.detectCollisions"/>.</summary>
+        public bool detectCollisions
+        {
+            get => _body == null || _body.detectCollisions;
+            set { if (_body != null) _body.detectCollisions = value; }
+        }
+
+        /// <summary>World centre of mass.</summary>
+        public Vector3 worldCenterOfMass => _body != null ? _body.worldCenterOfMass.ToUnity() : transform.position;
+
+        /// <summary>Velocity of the body's material point at a world position, m/s.</summary>
+        public Vector3 GetPointVelocity(Vector3 worldPoint) => _body != null ? _body.GetPointVelocity(worldPoint.ToNumerics()).ToUnity() : Vector3.zero;
     }
 }

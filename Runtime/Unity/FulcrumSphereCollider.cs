@@ -10,11 +10,12 @@ namespace Fulcrum.Unity
         [Tooltip("Radius, metres (> 0).")] public float radius = 0.5f;
 
         /// <inheritdoc/>
-        protected override F.Collider Create(F.Entity shadow)
-        {
-            var c = shadow.AddComponent<F.SphereCollider>();
-            c.radius = radius;
-            return c;
-        }
+        protected override F.Collider Create(F.Entity shadow) => shadow.AddComponent<F.SphereCollider>();
+
+        /// <inheritdoc/>
+        protected override void PushShape(F.Collider c) => ((F.SphereCollider)c).radius = radius;
+
+        /// <inheritdoc/>
+        protected override void ClampFields() => radius = Mathf.Max(radius, Limits.MinShapeSize);
     }
 }

@@ -8,10 +8,11 @@ namespace Fulcrum.Unity
     /// <summary>
     /// Drives a headless <see cref="F.PhysicsScene"/> from Unity's loop: at the end of each
     /// FixedUpdate (after every other script's, so their forces count) it copies transforms
-    /// moved by game code into the scene and calls <see cref="F.PhysicsScene.Simulate"/>; before
-    /// Update (through <see cref="FulcrumInterpolator"/>) it writes the interpolated poses back
-    /// to the GameObjects. Every GameObject with a Fulcrum component gets a shadow
-    /// <see cref="F.Entity"/>; all logic lives in Fulcrum.Components. Put one in a scene.
+    /// moved by game code into the scene and calls <see cref="F.PhysicsScene.Simulate"/> with
+    /// the current Time.fixedDeltaTime; before Update (through <see cref="FulcrumInterpolator"/>)
+    /// it writes the interpolated poses back to the GameObjects. Every GameObject with a Fulcrum
+    /// component gets a shadow <see cref="F.Entity"/>; all logic lives in Fulcrum.Components.
+    /// Put one in a scene (one is created on first use otherwise).
     /// </summary>
     [DefaultExecutionOrder(10000)]
     [DisallowMultipleComponent]
@@ -19,13 +20,16 @@ namespace Fulcrum.Unity
     {
         [Tooltip("Gravity, m/s^2.")]
         public Vector3 gravity = new Vector3(0, -9.81f, 0);
-        [Tooltip("Velocity iterations per substep.")]
+        [Tooltip("Velocity iterations per substep (1-64).")]
         public int iterations = 4;
-        [Tooltip("TGS substeps per step.")]
+        [Tooltip("TGS substeps per step (1-64).")]
         public int substeps = 4;
+        [Tooltip("Solver threads (1 = the main thread only).")]
+        public int threads = 1;
 
         readonly Dictionary<GameObject, F.Entity> _shadows = new Dictionary<GameObject, F.Entity>();
         readonly List<GameObject> _objects = new List<GameObject>();
+        readonly Dictionary<F.Collider, FulcrumCollider> _colliders = new Dictionary<F.Collider, FulcrumCollider>();
         F.PhysicsScene? _scene;
 
         /// <summary>The scene (created on first use).</summary>
@@ -36,9 +40,7 @@ namespace Fulcrum.Unity
                 if (_scene == null)
                 {
                     WorldSettings s = WorldSettings.Default;
-                    s.Gravity = gravity.ToNumerics();
-                    s.Iterations = iterations;
-                    s.Substeps = substeps;
+                    Apply(ref s);
                     _scene = new F.PhysicsScene(s, Time.fixedDeltaTime);
                 }
                 return _scene;
@@ -52,8 +54,23 @@ namespace Fulcrum.Unity
         {
             get
             {
-                if (_instance == null) _instance = FindObjectOfType<FulcrumWorld>();
-                if (_instance == null) _instance = new GameObject("Fulcrum World").AddComponent<FulcrumWorld>();
+                FulcrumWorld? w = Current;
+                if (w == null) w = _instance = new GameObject("Fulcrum World").AddComponent<FulcrumWorld>();
+                return w;
+            }
+        }
+
+        /// <summary>The FulcrumWorld of the loaded scene, or null (never creates one).</summary>
+        public static FulcrumWorld? Current
+        {
+            get
+            {
+                if (_instance == null)
+#if UNITY_2023_1_OR_NEWER
+                    _instance = FindAnyObjectByType<FulcrumWorld>();
+#else
+                    _instance = FindObjectOfType<FulcrumWorld>();
+#endif
                 return _instance;
             }
         }
@@ -62,6 +79,26 @@ namespace Fulcrum.Unity
         {
             if (_instance == null) _instance = this;
             if (GetComponent<FulcrumInterpolator>() == null) gameObject.AddComponent<FulcrumInterpolator>();
+        }
+
+        // Inspector edits in play mode reach the running world (values out of range are clamped, as Unity does).
+        void OnValidate()
+        {
+            iterations = Mathf.Clamp(iterations, 1, 64);
+            substeps = Mathf.Clamp(substeps, 1, 64);
+            threads = Mathf.Clamp(threads, 1, Limits.MaxThreads);
+            if (_scene == null) return;
+            WorldSettings s = _scene.world.Settings;
+            Apply(ref s);
+            _scene.world.Settings = s;
+        }
+
+        void Apply(ref WorldSettings s)
+        {
+            s.Gravity = gravity.ToNumerics();
+            s.Iterations = iterations;
+            s.Substeps = substeps;
+            s.Threads = threads;
         }
 
         /// <summary>The shadow entity of <paramref name="go"/>, created (under its nearest shadowed ancestor) when missing.</summary>
@@ -91,16 +128,16 @@ namespace Fulcrum.Unity
             if (!e.isDestroyed) Scene.DestroyImmediate(e);
         }
 
+        internal void Register(F.Collider c, FulcrumCollider face) => _colliders[c] = face;
+
+        internal void Unregister(F.Collider c) => _colliders.Remove(c);
+
+        /// <summary>The Unity collider whose headless collider is <paramref name="c"/>, or null.</summary>
+        public FulcrumCollider? FaceOf(F.Collider? c) => c != null && _colliders.TryGetValue(c, out FulcrumCollider f) ? f : null;
+
         void FixedUpdate()
         {
-            // Game code moved these since the last write: the shadows (and their bodies) follow.
-            for (int k = 0; k < _objects.Count; k++)
-            {
-                GameObject go = _objects[k];
-                if (go == null || !go.transform.hasChanged) continue;
-                F.Entity e = _shadows[go];
-                e.transform.SetPositionAndRotation(go.transform.position.ToNumerics(), go.transform.rotation.ToNumerics());
-            }
+            PushMovedTransforms();
             Scene.Simulate(Time.fixedDeltaTime);
             WriteBack();
         }
@@ -108,11 +145,31 @@ namespace Fulcrum.Unity
         /// <summary>Blends poses for this frame's rendering (called before Update by <see cref="FulcrumInterpolator"/>).</summary>
         internal void Interpolate()
         {
+            // Moves made since the last write (in last frame's Update or LateUpdate) reach the
+            // scene before the write-back below would overwrite them.
+            PushMovedTransforms();
             float alpha = Time.fixedDeltaTime > 0 ? Mathf.Clamp01((Time.time - Time.fixedTime) / Time.fixedDeltaTime) : 1f;
             Scene.ShowInterpolatedPoses(alpha);
             WriteBack();
         }
 
+        // Game code moved these since the last write: the shadows (and their bodies and shapes) follow.
+        void PushMovedTransforms()
+        {
+            for (int k = 0; k < _objects.Count; k++)
+            {
+                GameObject go = _objects[k];
+                if (go == null || !go.transform.hasChanged) continue;
+                F.Entity e = _shadows[go];
+                e.transform.SetPositionAndRotation(go.transform.position.ToNumerics(), go.transform.rotation.ToNumerics());
+                go.transform.hasChanged = false;
+            }
+        }
+
+        // Bodies' poses to their GameObjects. Writing a parent flags its children's transforms as
+        // changed too, so every shadowed object is marked in sync afterwards: otherwise a child
+        // collider of a moving body (or a collider-only object) would be pushed back next step
+        // and its shape rebuilt every FixedUpdate (warm starting and manifold reuse lost).
         void WriteBack()
         {
             for (int k = 0; k < _objects.Count; k++)
@@ -122,12 +179,18 @@ namespace Fulcrum.Unity
                 F.Entity e = _shadows[go];
                 if (e.GetComponent<F.Rigidbody>() == null) continue;
                 go.transform.SetPositionAndRotation(e.transform.position.ToUnity(), e.transform.rotation.ToUnity());
-                go.transform.hasChanged = false;
+            }
+            for (int k = 0; k < _objects.Count; k++)
+            {
+                GameObject go = _objects[k];
+                if (go != null) go.transform.hasChanged = false;
             }
         }
 
         void OnDestroy()
         {
+            // With domain reload off, play mode ending would otherwise leave the workers idling.
+            _scene?.world.StopThreads();
             if (_instance == this) _instance = null;
         }
     }

@@ -1,38 +1,89 @@
 #nullable enable
+using System.Collections.Generic;
 using UnityEngine;
 using F = Fulcrum.Components;
 
 namespace Fulcrum.Unity
 {
     /// <summary>
-    /// Lives on a shadow entity and forwards its physics messages to the GameObject as
-    /// OnFulcrumCollisionEnter/Stay/Exit(F.Collision), OnFulcrumTriggerEnter/Stay/Exit(F.Collider)
-    /// and OnFulcrumJointBreak(float) (Unity's own OnCollisionEnter takes a UnityEngine.Collision,
-    /// so the names differ). The Collision object is reused: copy what you keep.
+    /// Lives on a shadow entity and hands its physics messages to the GameObject's
+    /// MonoBehaviours that implement <see cref="IFulcrumCollisionHandler"/>,
+    /// <see cref="IFulcrumTriggerHandler"/> or <see cref="IFulcrumJointBreakHandler"/>: a direct
+    /// interface call per receiver, found with GetComponents into a reused list (no SendMessage
+    /// reflection, no allocation per contact per step). Unity's own OnCollisionEnter takes a
+    /// UnityEngine.Collision, so the names differ.
     /// </summary>
     public sealed class UnityMessageRelay : F.Behaviour
     {
         /// <summary>The GameObject that receives the messages.</summary>
         public GameObject? Target;
 
-        void Send(string message, object argument)
+        readonly List<IFulcrumCollisionHandler> _collision = new List<IFulcrumCollisionHandler>();
+        readonly List<IFulcrumTriggerHandler> _trigger = new List<IFulcrumTriggerHandler>();
+        readonly List<IFulcrumJointBreakHandler> _jointBreak = new List<IFulcrumJointBreakHandler>();
+
+        List<IFulcrumCollisionHandler> CollisionHandlers()
         {
-            if (Target != null) Target.SendMessage(message, argument, SendMessageOptions.DontRequireReceiver);
+            _collision.Clear();
+            if (Target != null) Target.GetComponents(_collision);
+            return _collision;
+        }
+
+        List<IFulcrumTriggerHandler> TriggerHandlers()
+        {
+            _trigger.Clear();
+            if (Target != null) Target.GetComponents(_trigger);
+            return _trigger;
         }
 
         /// <inheritdoc/>
-        protected override void OnCollisionEnter(F.Collision c) => Send("OnFulcrumCollisionEnter", c);
+        protected override void OnCollisionEnter(F.Collision c)
+        {
+            List<IFulcrumCollisionHandler> h = CollisionHandlers();
+            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionEnter(c);
+        }
+
         /// <inheritdoc/>
-        protected override void OnCollisionStay(F.Collision c) => Send("OnFulcrumCollisionStay", c);
+        protected override void OnCollisionStay(F.Collision c)
+        {
+            List<IFulcrumCollisionHandler> h = CollisionHandlers();
+            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionStay(c);
+        }
+
         /// <inheritdoc/>
-        protected override void OnCollisionExit(F.Collision c) => Send("OnFulcrumCollisionExit", c);
+        protected override void OnCollisionExit(F.Collision c)
+        {
+            List<IFulcrumCollisionHandler> h = CollisionHandlers();
+            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionExit(c);
+        }
+
         /// <inheritdoc/>
-        protected override void OnTriggerEnter(F.Collider other) => Send("OnFulcrumTriggerEnter", other);
+        protected override void OnTriggerEnter(F.Collider other)
+        {
+            List<IFulcrumTriggerHandler> h = TriggerHandlers();
+            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerEnter(other);
+        }
+
         /// <inheritdoc/>
-        protected override void OnTriggerStay(F.Collider other) => Send("OnFulcrumTriggerStay", other);
+        protected override void OnTriggerStay(F.Collider other)
+        {
+            List<IFulcrumTriggerHandler> h = TriggerHandlers();
+            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerStay(other);
+        }
+
         /// <inheritdoc/>
-        protected override void OnTriggerExit(F.Collider other) => Send("OnFulcrumTriggerExit", other);
+        protected override void OnTriggerExit(F.Collider other)
+        {
+            List<IFulcrumTriggerHandler> h = TriggerHandlers();
+            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerExit(other);
+        }
+
         /// <inheritdoc/>
-        protected override void OnJointBreak(float breakForce) => Send("OnFulcrumJointBreak", breakForce);
+        protected override void OnJointBreak(float breakForce)
+        {
+            _jointBreak.Clear();
+            if (Target != null) Target.GetComponents(_jointBreak);
+            for (int i = 0; i < _jointBreak.Count; i++) _jointBreak[i].OnFulcrumJointBreak(breakForce);
+        }
     }
 }

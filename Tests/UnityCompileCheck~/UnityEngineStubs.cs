@@ -1,6 +1,11 @@
 // Stand-ins for the parts of UnityEngine and UnityEditor that Fulcrum.Unity and Fulcrum.Editor
 // use, with Unity's names and signatures, so that `dotnet build` can type-check the adapters.
 // Bodies do nothing. Never shipped: Unity does not import folders whose names end in '~'.
+// Every member was checked against Unity's C# reference source (github.com/Unity-Technologies/
+// UnityCsReference), branches 2021.3 (2021.3.58f1) and 6000.0 (6000.0.78f1): same name, static-ness,
+// parameter and return types. Two differ by version and are used under #if: FindObjectOfType is
+// obsolete from 2023.1 (FindAnyObjectByType replaces it; it exists from 2021.3.18).
+// Members Unity has and these lack are simply not used by the adapters.
 #nullable disable
 #pragma warning disable CS0067, CS0626, CS1591
 using System;
@@ -11,6 +16,8 @@ namespace UnityEngine
     {
         public string name { get; set; }
         public static T FindObjectOfType<T>() where T : Object => null;
+        public static T FindAnyObjectByType<T>() where T : Object => null;
+        public static void Destroy(Object obj) { }
     }
 
     public class Component : Object
@@ -18,7 +25,9 @@ namespace UnityEngine
         public GameObject gameObject => null;
         public Transform transform => null;
         public T GetComponent<T>() => default;
+        public T GetComponentInParent<T>() => default;
         public T[] GetComponents<T>() => Array.Empty<T>();
+        public void GetComponents<T>(System.Collections.Generic.List<T> results) { }
         public void SendMessage(string methodName, object value, SendMessageOptions options) { }
     }
 
@@ -38,6 +47,7 @@ namespace UnityEngine
         public T AddComponent<T>() where T : Component => null;
         public T GetComponent<T>() => default;
         public T[] GetComponents<T>() => Array.Empty<T>();
+        public void GetComponents<T>(System.Collections.Generic.List<T> results) { }
         public void SendMessage(string methodName, object value, SendMessageOptions options) { }
     }
 
@@ -48,7 +58,40 @@ namespace UnityEngine
         public Transform parent { get; set; }
         public bool hasChanged { get; set; }
         public Matrix4x4 localToWorldMatrix => default;
+        public Vector3 lossyScale => default;
         public void SetPositionAndRotation(Vector3 position, Quaternion rotation) { }
+        public Vector3 InverseTransformPoint(Vector3 position) => default;
+        public Vector3 InverseTransformDirection(Vector3 direction) => default;
+    }
+
+    public sealed class Mesh : Object
+    {
+        public Mesh() { }
+        public bool isReadable => true;
+        public Vector3[] vertices { get => Array.Empty<Vector3>(); set { } }
+        public int[] triangles { get => Array.Empty<int>(); set { } }
+        public void SetVertices(Vector3[] inVertices) { }
+        public void SetNormals(Vector3[] inNormals) { }
+        public void RecalculateBounds() { }
+        public void MarkDynamic() { }
+    }
+
+    public sealed class MeshFilter : Component
+    {
+        public Mesh sharedMesh { get; set; }
+        public Mesh mesh { get; set; }
+    }
+
+    public struct Bounds
+    {
+        public Bounds(Vector3 center, Vector3 size) { }
+    }
+
+    public struct Ray
+    {
+        public Ray(Vector3 origin, Vector3 direction) { }
+        public Vector3 origin { get => default; set { } }
+        public Vector3 direction { get => default; set { } }
     }
 
     public struct Vector3
@@ -99,10 +142,15 @@ namespace UnityEngine
         public static float fixedDeltaTime => 0.02f;
     }
 
-    public static class Mathf
+    public struct Mathf
     {
-        public static float Clamp01(float v) => v;
+        public const float PI = 3.14159274F;
+        public const float Infinity = float.PositiveInfinity;
+        public static float Clamp01(float value) => value;
+        public static float Clamp(float value, float min, float max) => value;
+        public static int Clamp(int value, int min, int max) => value;
         public static float Max(float a, float b) => a;
+        public static float Sqrt(float f) => f;
     }
 
     public static class Application

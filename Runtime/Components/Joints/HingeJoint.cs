@@ -4,6 +4,7 @@ using Fulcrum.Dynamics;
 namespace Fulcrum.Components
 {
     /// <summary>Limits of a <see cref="HingeJoint"/>, degrees (Unity's JointLimits).</summary>
+    [Serializable]
     public struct JointLimits
     {
         /// <summary>Lower angle, degrees in [-180, 180].</summary>
@@ -13,6 +14,7 @@ namespace Fulcrum.Components
     }
 
     /// <summary>A motor of a <see cref="HingeJoint"/> (Unity's JointMotor).</summary>
+    [Serializable]
     public struct JointMotor
     {
         /// <summary>Target angular speed of this body relative to the connected one, degrees/s.</summary>

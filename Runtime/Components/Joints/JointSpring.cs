@@ -1,6 +1,9 @@
+using System;
+
 namespace Fulcrum.Components
 {
     /// <summary>A hinge spring in Unity's units (Unity's JointSpring).</summary>
+    [Serializable]
     public struct JointSpring
     {
         /// <summary>Stiffness, N m per radian of angle from <see cref="targetPosition"/> (&gt;= 0).</summary>

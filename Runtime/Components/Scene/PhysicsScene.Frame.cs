@@ -86,7 +86,9 @@ namespace Fulcrum.Components
         public void ShowInterpolatedPoses(float alpha)
         {
             if (!float.IsFinite(alpha)) throw new ArgumentException($"alpha must be finite, got {alpha}.", nameof(alpha));
-            float dt = _stepper.FixedDt;
+            // The step last taken: a host calling Simulate with its own step (Unity's
+            // Time.fixedDeltaTime, which a game may change) extrapolates by that one.
+            float dt = _lastStepDt > 0 ? _lastStepDt : _stepper.FixedDt;
             BodyStorage b = _world.Bodies;
             for (int k = 0; k < _rigidbodies.Count; k++)
             {
@@ -114,8 +116,11 @@ namespace Fulcrum.Components
             }
         }
 
+        float _lastStepDt;
+
         void StepAndDispatch(float dt)
         {
+            _lastStepDt = dt;
             PushEditedTransforms();
             BuildPendingJoints();
             BeforeStepConstraints();

@@ -12,7 +12,7 @@ namespace Fulcrum.Components
     /// An entity carries either a SoftBody or a Rigidbody, not both. Changing the mesh or the
     /// material of a live soft body rebuilds it at rest.
     /// </summary>
-    public sealed class SoftBody : Component
+    public sealed partial class SoftBody : Component
     {
         SoftMesh? _mesh;
         NeoHookeanMaterial _material = NeoHookeanMaterial.Default;
@@ -81,6 +81,7 @@ namespace Fulcrum.Components
             def.Layer = entity.layer;
             def.CollidesWith = scene.CollisionMaskOf(entity.layer);
             def.Name = name;
+            ApplySettings(ref def);
             _handle = scene.world.CreateSoftBody(def);
         }
 

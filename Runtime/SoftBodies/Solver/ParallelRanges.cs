@@ -25,6 +25,7 @@ namespace Fulcrum.SoftBodies
         Round _round;
         long _claims;
         int _done;
+        bool _stopped; // guarded by _lock
 
         public ParallelRanges(int threads)
         {
@@ -33,6 +34,16 @@ namespace Fulcrum.SoftBodies
             {
                 var worker = new Thread(WorkerLoop) { IsBackground = true, Name = "Fulcrum soft-body worker " + t };
                 worker.Start();
+            }
+        }
+
+        /// <summary>Lets the worker threads end; the pool must not be used afterwards.</summary>
+        public void Stop()
+        {
+            lock (_lock)
+            {
+                _stopped = true;
+                Monitor.PulseAll(_lock);
             }
         }
 
@@ -88,7 +99,8 @@ namespace Fulcrum.SoftBodies
                 Round round;
                 lock (_lock)
                 {
-                    while (_round.Id == seen || _round.Job == null) Monitor.Wait(_lock);
+                    while (!_stopped && (_round.Id == seen || _round.Job == null)) Monitor.Wait(_lock);
+                    if (_stopped) return;
                     round = _round;
                     seen = round.Id;
                 }

@@ -1,0 +1,28 @@
+#nullable enable
+using UnityEngine;
+using F = Fulcrum.Components;
+
+namespace Fulcrum.Unity
+{
+    /// <summary>
+    /// A convex hull collider: the hull of a Unity mesh's vertices (this GameObject's MeshFilter
+    /// mesh when <see cref="sharedMesh"/> is empty), scaled by the lossyScale. Unity spells this
+    /// MeshCollider with convex on; Fulcrum gives it its own component because a hull is what
+    /// dynamic bodies of any shape use. The mesh must be readable (Read/Write enabled).
+    /// </summary>
+    public sealed class FulcrumConvexCollider : FulcrumCollider
+    {
+        [Tooltip("The mesh whose vertices' hull is the shape; empty = this GameObject's MeshFilter mesh.")] public Mesh? sharedMesh;
+
+        /// <inheritdoc/>
+        protected override F.Collider Create(F.Entity shadow) => shadow.AddComponent<F.MeshCollider>();
+
+        /// <inheritdoc/>
+        protected override void PushShape(F.Collider c)
+        {
+            var m = (F.MeshCollider)c;
+            m.convex = true;
+            m.sharedMesh = UnityMeshes.ToFulcrum(UnityMeshes.MeshOf(this, sharedMesh), transform.lossyScale, this);
+        }
+    }
+}

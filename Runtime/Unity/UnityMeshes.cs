@@ -1,0 +1,42 @@
+#nullable enable
+using System;
+using UnityEngine;
+using F = Fulcrum.Components;
+using N = System.Numerics;
+
+namespace Fulcrum.Unity
+{
+    /// <summary>Unity meshes as Fulcrum geometry, with the GameObject's scale baked in (Fulcrum's entities carry no scale).</summary>
+    public static class UnityMeshes
+    {
+        /// <summary>
+        /// The vertices of <paramref name="mesh"/> multiplied component-wise by
+        /// <paramref name="scale"/> (the transform's lossyScale), as System.Numerics vectors.
+        /// Throws when the mesh's data cannot be read (Read/Write disabled in its import settings).
+        /// </summary>
+        public static N.Vector3[] ScaledVertices(Mesh mesh, Vector3 scale, UnityEngine.Object owner)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh), $"{owner.name}: no mesh is assigned.");
+            if (!mesh.isReadable)
+                throw new InvalidOperationException($"{owner.name}: mesh '{mesh.name}' is not readable; enable Read/Write in its import settings so that Fulcrum can build its shape.");
+            Vector3[] v = mesh.vertices;
+            var result = new N.Vector3[v.Length];
+            for (int i = 0; i < v.Length; i++) result[i] = new N.Vector3(v[i].x * scale.x, v[i].y * scale.y, v[i].z * scale.z);
+            return result;
+        }
+
+        /// <summary><paramref name="assigned"/>, or else the mesh of the MeshFilter on <paramref name="owner"/>'s GameObject; throws when there is neither.</summary>
+        public static Mesh MeshOf(Component owner, Mesh? assigned)
+        {
+            if (assigned != null) return assigned;
+            MeshFilter filter = owner.GetComponent<MeshFilter>();
+            Mesh? mesh = filter != null ? filter.sharedMesh : null;
+            if (mesh == null) throw new InvalidOperationException($"{owner.name}: {owner.GetType().Name} has no mesh (assign one or add a MeshFilter with a mesh).");
+            return mesh;
+        }
+
+        /// <summary>A headless <see cref="F.Mesh"/> of <paramref name="mesh"/> at <paramref name="scale"/>.</summary>
+        public static F.Mesh ToFulcrum(Mesh mesh, Vector3 scale, UnityEngine.Object owner) =>
+            new F.Mesh(ScaledVertices(mesh, scale, owner), mesh.triangles) { name = mesh.name };
+    }
+}
