@@ -12,8 +12,13 @@ namespace Fulcrum.Unity
     /// </summary>
     public sealed class FulcrumCharacterJoint : FulcrumJoint
     {
-        [Tooltip("Half-angle of the swing cone, degrees in [0, 180].")] public float swingLimit = 45f;
-        [Tooltip("Twist either way about the axis, degrees in [0, 180].")] public float twistLimit = 45f;
+        [SerializeField, Tooltip("Half-angle of the swing cone, degrees in [0, 180].")] float m_SwingLimit = 45f;
+        [SerializeField, Tooltip("Twist either way about the axis, degrees in [0, 180].")] float m_TwistLimit = 45f;
+
+        /// <summary>Half-angle of the swing cone, degrees in [0, 180].</summary>
+        public float swingLimit { get => m_SwingLimit; set { m_SwingLimit = value; Push(); } }
+        /// <summary>Twist either way about the axis, degrees in [0, 180].</summary>
+        public float twistLimit { get => m_TwistLimit; set { m_TwistLimit = value; Push(); } }
 
         /// <inheritdoc/>
         protected override F.Joint Create(F.Entity shadow) => shadow.AddComponent<F.ConeTwistJoint>();
@@ -22,8 +27,9 @@ namespace Fulcrum.Unity
         protected override void PushKind(F.Joint j)
         {
             var c = (F.ConeTwistJoint)j;
-            c.coneAngle = Mathf.Clamp(swingLimit, 0f, 180f);
-            c.twistAngle = Mathf.Clamp(twistLimit, 0f, 180f);
+            float cone = Mathf.Clamp(m_SwingLimit, 0f, 180f), twist = Mathf.Clamp(m_TwistLimit, 0f, 180f);
+            if (c.coneAngle != cone) c.coneAngle = cone;
+            if (c.twistAngle != twist) c.twistAngle = twist;
         }
     }
 }

@@ -6,18 +6,31 @@ namespace Fulcrum.Unity
 {
     /// <summary>
     /// The base of the Unity collider faces: creates the headless collider on the shadow entity
-    /// when enabled, pushes inspector edits made in play mode (OnValidate), and answers Unity's
-    /// per-collider queries.
+    /// when enabled. As in Unity, the properties take effect at once on a live collider (set
+    /// from code after AddComponent, or edited in the inspector in play mode); the headless
+    /// collider checks every value. Also answers Unity's per-collider queries.
     /// </summary>
     public abstract class FulcrumCollider : FulcrumComponent
     {
-        [Tooltip("Reports overlaps (OnFulcrumTrigger*) with no physical response.")] public bool isTrigger;
-        [Tooltip("Centre in the GameObject's frame, metres.")] public Vector3 center;
-        [Tooltip("Friction used by Fulcrum (dynamic friction).")] public float friction = 0.6f;
-        [Tooltip("Restitution in [0, 1].")] public float bounciness;
+        [SerializeField, Tooltip("Reports overlaps (IFulcrumTriggerHandler) with no physical response.")] bool m_IsTrigger;
+        [SerializeField, Tooltip("Centre in the GameObject's frame, metres.")] Vector3 m_Center;
+        [SerializeField, Tooltip("Friction used by Fulcrum (dynamic friction).")] float m_Friction = 0.6f;
+        [SerializeField, Tooltip("Restitution in [0, 1].")] float m_Bounciness;
 
         F.Collider? _collider;
         FulcrumWorld? _world;
+
+        /// <summary>A trigger reports overlaps and has no physical response.</summary>
+        public bool isTrigger { get => m_IsTrigger; set { m_IsTrigger = value; Push(); } }
+
+        /// <summary>The shape's centre in the GameObject's frame, metres.</summary>
+        public Vector3 center { get => m_Center; set { m_Center = value; Push(); } }
+
+        /// <summary>Friction (dynamic), &gt;= 0. Default: 0.6.</summary>
+        public float friction { get => m_Friction; set { m_Friction = value; Push(); } }
+
+        /// <summary>Restitution in [0, 1]. Default: 0.</summary>
+        public float bounciness { get => m_Bounciness; set { m_Bounciness = value; Push(); } }
 
         /// <summary>The headless collider (null while disabled).</summary>
         public F.Collider? Collider => _collider;
@@ -30,6 +43,12 @@ namespace Fulcrum.Unity
 
         /// <summary>Copies the size fields (validated by the headless collider) to <paramref name="c"/>.</summary>
         protected abstract void PushShape(F.Collider c);
+
+        /// <summary>Pushes every field to the live headless collider (no-op while disabled).</summary>
+        protected void Push()
+        {
+            if (_collider != null && !_collider.isDestroyed) PushAll(_collider);
+        }
 
         void OnEnable()
         {
@@ -45,20 +64,22 @@ namespace Fulcrum.Unity
         void PushAll(F.Collider c)
         {
             PushShape(c);
-            c.center = center.ToNumerics();
-            c.isTrigger = isTrigger;
-            if (friction != 0.6f || bounciness != 0f)
-                c.sharedMaterial = new F.PhysicsMaterial(name) { dynamicFriction = friction, bounciness = bounciness };
-            else if (c.sharedMaterial != null && c.sharedMaterial.name == name)
-                c.sharedMaterial = null;
+            c.center = m_Center.ToNumerics();
+            c.isTrigger = m_IsTrigger;
+            if (m_Friction != 0.6f || m_Bounciness != 0f)
+            {
+                F.PhysicsMaterial m = c.material;
+                m.dynamicFriction = m_Friction;
+                m.bounciness = m_Bounciness;
+            }
         }
 
         void OnValidate()
         {
-            friction = Mathf.Max(friction, 0f);
-            bounciness = Mathf.Clamp01(bounciness);
+            m_Friction = Mathf.Max(m_Friction, 0f);
+            m_Bounciness = Mathf.Clamp01(m_Bounciness);
             ClampFields();
-            if (IsLive && _collider != null && !_collider.isDestroyed) PushAll(_collider);
+            if (IsLive) Push();
         }
 
         /// <summary>Clamps the size fields to what the headless collider accepts (inspector edits).</summary>

@@ -12,7 +12,12 @@ namespace Fulcrum.Unity
     /// </summary>
     public sealed class FulcrumConvexCollider : FulcrumCollider
     {
-        [Tooltip("The mesh whose vertices' hull is the shape; empty = this GameObject's MeshFilter mesh.")] public Mesh? sharedMesh;
+        [SerializeField, Tooltip("The mesh whose vertices' hull is the shape; empty = this GameObject's MeshFilter mesh.")] Mesh? m_Mesh;
+
+        /// <summary>The mesh whose vertices' hull is the shape; null = this GameObject's MeshFilter mesh.</summary>
+        public Mesh? sharedMesh { get => m_Mesh; set { m_Mesh = value; Push(); } }
+
+        readonly MeshCache _cache = new MeshCache();
 
         /// <inheritdoc/>
         protected override F.Collider Create(F.Entity shadow) => shadow.AddComponent<F.MeshCollider>();
@@ -22,7 +27,8 @@ namespace Fulcrum.Unity
         {
             var m = (F.MeshCollider)c;
             m.convex = true;
-            m.sharedMesh = UnityMeshes.ToFulcrum(UnityMeshes.MeshOf(this, sharedMesh), transform.lossyScale, this);
+            F.Mesh built = _cache.Get(UnityMeshes.MeshOf(this, m_Mesh), transform.lossyScale, this);
+            if (!ReferenceEquals(m.sharedMesh, built)) m.sharedMesh = built;
         }
     }
 }

@@ -12,8 +12,16 @@ namespace Fulcrum.Unity
     /// </summary>
     public sealed class FulcrumMeshCollider : FulcrumCollider
     {
-        [Tooltip("The mesh; empty = this GameObject's MeshFilter mesh.")] public Mesh? sharedMesh;
-        [Tooltip("Use the convex hull (required on a rigidbody).")] public bool convex;
+        [SerializeField, Tooltip("The mesh; empty = this GameObject's MeshFilter mesh.")] Mesh? m_Mesh;
+        [SerializeField, Tooltip("Use the convex hull (required on a rigidbody).")] bool m_Convex;
+
+        /// <summary>The mesh; null = this GameObject's MeshFilter mesh.</summary>
+        public Mesh? sharedMesh { get => m_Mesh; set { m_Mesh = value; Push(); } }
+
+        /// <summary>Use the mesh's convex hull (required on a rigidbody).</summary>
+        public bool convex { get => m_Convex; set { m_Convex = value; Push(); } }
+
+        readonly MeshCache _cache = new MeshCache();
 
         /// <inheritdoc/>
         protected override F.Collider Create(F.Entity shadow) => shadow.AddComponent<F.MeshCollider>();
@@ -22,8 +30,9 @@ namespace Fulcrum.Unity
         protected override void PushShape(F.Collider c)
         {
             var m = (F.MeshCollider)c;
-            m.convex = convex;
-            m.sharedMesh = UnityMeshes.ToFulcrum(UnityMeshes.MeshOf(this, sharedMesh), transform.lossyScale, this);
+            m.convex = m_Convex;
+            F.Mesh built = _cache.Get(UnityMeshes.MeshOf(this, m_Mesh), transform.lossyScale, this);
+            if (!ReferenceEquals(m.sharedMesh, built)) m.sharedMesh = built;
         }
     }
 }

@@ -27,14 +27,8 @@ namespace Fulcrum.Unity
         /// <summary>World gravity, m/s^2.</summary>
         public static Vector3 gravity
         {
-            get => Scene.world.Settings.Gravity.ToUnity();
-            set
-            {
-                WorldSettings s = Scene.world.Settings;
-                s.Gravity = value.ToNumerics();
-                Scene.world.Settings = s;
-                FulcrumWorld.Instance.gravity = value;
-            }
+            get => FulcrumWorld.Instance.gravity;
+            set => FulcrumWorld.Instance.gravity = value;
         }
 
         /// <summary>The first collider along the ray (Unity's Physics.Raycast).</summary>

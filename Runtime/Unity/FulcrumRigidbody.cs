@@ -5,22 +5,39 @@ using F = Fulcrum.Components;
 namespace Fulcrum.Unity
 {
     /// <summary>
-    /// Unity face of <see cref="F.Rigidbody"/>: the inspector fields are copied to the headless
-    /// component when it is enabled and again when edited in play mode (OnValidate); at run time
-    /// the members below forward to <see cref="Body"/>, where every value is checked and
-    /// documented. Members Unity has and this face lacks are on <see cref="Body"/>.
+    /// Unity face of <see cref="F.Rigidbody"/>: the serialized fields are copied to the headless
+    /// component when it is enabled; the properties take effect at once (from code, or edited in
+    /// the inspector in play mode) and the other members forward to <see cref="Body"/>, where
+    /// every value is checked and documented. Members Unity has and this face lacks are on <see cref="Body"/>.
     /// </summary>
     [DisallowMultipleComponent]
     public sealed class FulcrumRigidbody : FulcrumComponent
     {
-        [Tooltip("Mass, kg (> 0).")] public float mass = 1f;
-        [Tooltip("Linear damping, 1/s (Unity 2021-2022: drag).")] public float linearDamping;
-        [Tooltip("Angular damping, 1/s (Unity 2021-2022: angularDrag).")] public float angularDamping = 0.05f;
-        public bool useGravity = true;
-        public bool isKinematic;
-        public F.RigidbodyInterpolation interpolation = F.RigidbodyInterpolation.None;
-        public F.CollisionDetectionMode collisionDetectionMode = F.CollisionDetectionMode.Discrete;
-        public F.RigidbodyConstraints constraints = F.RigidbodyConstraints.None;
+        [SerializeField, Tooltip("Mass, kg (> 0).")] float m_Mass = 1f;
+        [SerializeField, Tooltip("Linear damping, 1/s (Unity 2021-2022: drag).")] float m_LinearDamping;
+        [SerializeField, Tooltip("Angular damping, 1/s (Unity 2021-2022: angularDrag).")] float m_AngularDamping = 0.05f;
+        [SerializeField] bool m_UseGravity = true;
+        [SerializeField] bool m_IsKinematic;
+        [SerializeField] F.RigidbodyInterpolation m_Interpolation = F.RigidbodyInterpolation.None;
+        [SerializeField] F.CollisionDetectionMode m_CollisionDetectionMode = F.CollisionDetectionMode.Discrete;
+        [SerializeField] F.RigidbodyConstraints m_Constraints = F.RigidbodyConstraints.None;
+
+        /// <summary>Mass, kg (&gt; 0).</summary>
+        public float mass { get => m_Mass; set { m_Mass = value; Push(); } }
+        /// <summary>Linear damping, 1/s.</summary>
+        public float linearDamping { get => m_LinearDamping; set { m_LinearDamping = value; Push(); } }
+        /// <summary>Angular damping, 1/s.</summary>
+        public float angularDamping { get => m_AngularDamping; set { m_AngularDamping = value; Push(); } }
+        /// <summary>Whether gravity acts on the body.</summary>
+        public bool useGravity { get => m_UseGravity; set { m_UseGravity = value; Push(); } }
+        /// <summary>Kinematic bodies are moved by the game and push dynamic ones.</summary>
+        public bool isKinematic { get => m_IsKinematic; set { m_IsKinematic = value; Push(); } }
+        /// <summary>How the transform shows the body between fixed steps.</summary>
+        public F.RigidbodyInterpolation interpolation { get => m_Interpolation; set { m_Interpolation = value; Push(); } }
+        /// <summary>Discrete or continuous collision detection.</summary>
+        public F.CollisionDetectionMode collisionDetectionMode { get => m_CollisionDetectionMode; set { m_CollisionDetectionMode = value; Push(); } }
+        /// <summary>Frozen degrees of freedom (see <see cref="F.Rigidbody.constraints"/>).</summary>
+        public F.RigidbodyConstraints constraints { get => m_Constraints; set { m_Constraints = value; Push(); } }
 
         F.Rigidbody? _body;
 
@@ -38,24 +55,29 @@ namespace Fulcrum.Unity
             return _body;
         }
 
+        void Push()
+        {
+            if (_body != null && !_body.isDestroyed) Push(_body);
+        }
+
         void Push(F.Rigidbody b)
         {
-            b.mass = mass;
-            b.linearDamping = linearDamping;
-            b.angularDamping = angularDamping;
-            b.useGravity = useGravity;
-            b.isKinematic = isKinematic;
-            b.interpolation = interpolation;
-            b.collisionDetectionMode = collisionDetectionMode;
-            b.constraints = constraints;
+            b.mass = m_Mass;
+            b.linearDamping = m_LinearDamping;
+            b.angularDamping = m_AngularDamping;
+            b.useGravity = m_UseGravity;
+            b.isKinematic = m_IsKinematic;
+            b.interpolation = m_Interpolation;
+            b.collisionDetectionMode = m_CollisionDetectionMode;
+            b.constraints = m_Constraints;
         }
 
         void OnValidate()
         {
-            mass = Mathf.Max(mass, Limits.MinMass);
-            linearDamping = Mathf.Max(linearDamping, 0f);
-            angularDamping = Mathf.Max(angularDamping, 0f);
-            if (IsLive && _body != null && !_body.isDestroyed) Push(_body);
+            m_Mass = Mathf.Max(m_Mass, Limits.MinMass);
+            m_LinearDamping = Mathf.Max(m_LinearDamping, 0f);
+            m_AngularDamping = Mathf.Max(m_AngularDamping, 0f);
+            if (IsLive) Push();
         }
 
         void OnDisable()
@@ -132,29 +154,17 @@ namespace Fulcrum.Unity
             set { if (_body != null) _body.angularVelocity = value.ToNumerics(); }
         }
 
-        /// <summary>Unity 2021.3-2022's name of <see cref="linearDamping"/> (and the inspector field).</summary>
-        public float drag
-        {
-            get => linearDamping;
-            set { linearDamping = value; if (_body != null) _body.linearDamping = value; }
-        }
+        /// <summary>Unity 2021.3-2022's name of <see cref="linearDamping"/>.</summary>
+        public float drag { get => linearDamping; set => linearDamping = value; }
 
-        /// <summary>Unity 2021.3-2022's name of <see cref="angularDamping"/> (and the inspector field).</summary>
-        public float angularDrag
-        {
-            get => angularDamping;
-            set { angularDamping = value; if (_body != null) _body.angularDamping = value; }
-        }
+        /// <summary>Unity 2021.3-2022's name of <see cref="angularDamping"/>.</summary>
+        public float angularDrag { get => angularDamping; set => angularDamping = value; }
 
         /// <summary>See <see cref="F.Rigidbody.freezeRotation"/>.</summary>
         public bool freezeRotation
         {
-            get => (constraints & F.RigidbodyConstraints.FreezeRotation) == F.RigidbodyConstraints.FreezeRotation;
-            set
-            {
-                constraints = value ? constraints | F.RigidbodyConstraints.FreezeRotation : constraints & ~F.RigidbodyConstraints.FreezeRotation;
-                if (_body != null) _body.constraints = constraints;
-            }
+            get => (m_Constraints & F.RigidbodyConstraints.FreezeRotation) == F.RigidbodyConstraints.FreezeRotation;
+            set => constraints = value ? m_Constraints | F.RigidbodyConstraints.FreezeRotation : m_Constraints & ~F.RigidbodyConstraints.FreezeRotation;
         }
 
         /// <summary>See <see cref="F.Rigidbody.maxAngularVelocity"/> (default: no cap; Unity's is 7 rad/s).</summary>

@@ -22,15 +22,32 @@ namespace Fulcrum.Unity
     [RequireComponent(typeof(MeshFilter))]
     public sealed class FulcrumSoftBody : FulcrumComponent
     {
-        [Tooltip("Cells of the tetrahedral grid along the mesh's longest side (2-256); cost grows with its cube.")]
-        public int resolution = 6;
-        [Tooltip("Young's modulus, Pa (jelly 1e4, rubber 1e6-1e7).")] public float youngsModulus = 1e5f;
-        [Tooltip("Poisson ratio in [0, 0.5); near 0.5 is nearly incompressible.")] public float poissonRatio = 0.45f;
-        [Tooltip("Density, kg/m^3.")] public float density = 1000f;
-        [Tooltip("Coulomb friction against colliders.")] public float friction = 0.5f;
-        [Tooltip("XPBD (fast, soft) or Newton (converges on stiff materials).")] public SoftSolver solver = SoftSolver.Xpbd;
-        [Tooltip("Substeps per physics step; 0 = automatic.")] public int substeps;
-        [Tooltip("Stiffness-proportional damping time, s: how quickly wobbles die.")] public float dampingTime = 0.01f;
+        [SerializeField, Tooltip("Cells of the tetrahedral grid along the mesh's longest side (2-256); cost grows with its cube.")]
+        int m_Resolution = 6;
+        [SerializeField, Tooltip("Young's modulus, Pa (jelly 1e4, rubber 1e6-1e7).")] float m_YoungsModulus = 1e5f;
+        [SerializeField, Tooltip("Poisson ratio in [0, 0.5); near 0.5 is nearly incompressible.")] float m_PoissonRatio = 0.45f;
+        [SerializeField, Tooltip("Density, kg/m^3.")] float m_Density = 1000f;
+        [SerializeField, Tooltip("Coulomb friction against colliders.")] float m_Friction = 0.5f;
+        [SerializeField, Tooltip("XPBD (fast, soft) or Newton (converges on stiff materials).")] SoftSolver m_Solver = SoftSolver.Xpbd;
+        [SerializeField, Tooltip("Substeps per physics step; 0 = automatic.")] int m_Substeps;
+        [SerializeField, Tooltip("Stiffness-proportional damping time, s: how quickly wobbles die.")] float m_DampingTime = 0.01f;
+
+        /// <summary>Grid cells along the mesh's longest side (2-256); read when the component is enabled.</summary>
+        public int resolution { get => m_Resolution; set => m_Resolution = value; }
+        /// <summary>Young's modulus, Pa. Changing it rebuilds a live body at rest.</summary>
+        public float youngsModulus { get => m_YoungsModulus; set { m_YoungsModulus = value; PushMaterial(); } }
+        /// <summary>Poisson ratio in [0, 0.5). Changing it rebuilds a live body at rest.</summary>
+        public float poissonRatio { get => m_PoissonRatio; set { m_PoissonRatio = value; PushMaterial(); } }
+        /// <summary>Density, kg/m^3. Changing it rebuilds a live body at rest.</summary>
+        public float density { get => m_Density; set { m_Density = value; PushMaterial(); } }
+        /// <summary>Coulomb friction against colliders.</summary>
+        public float friction { get => m_Friction; set { m_Friction = value; PushLive(); } }
+        /// <summary>The elastic solver.</summary>
+        public SoftSolver solver { get => m_Solver; set { m_Solver = value; PushLive(); } }
+        /// <summary>Substeps per physics step; 0 = automatic.</summary>
+        public int substeps { get => m_Substeps; set { m_Substeps = value; PushLive(); } }
+        /// <summary>Stiffness-proportional damping time, s.</summary>
+        public float dampingTime { get => m_DampingTime; set { m_DampingTime = value; PushLive(); } }
 
         F.SoftBody? _body;
         EmbeddedRenderMesh? _embedding;
@@ -53,7 +70,7 @@ namespace Fulcrum.Unity
             N.Vector3[] rest = UnityMeshes.ScaledVertices(source, transform.lossyScale, this);
             int[] triangles = source.triangles;
             SoftMesh tets;
-            try { tets = SurfaceTetrahedralizer.Tetrahedralize(rest, triangles, resolution); }
+            try { tets = SurfaceTetrahedralizer.Tetrahedralize(rest, triangles, m_Resolution); }
             catch (ArgumentException e) { throw new ArgumentException($"{name}: FulcrumSoftBody cannot tetrahedralise mesh '{source.name}': {e.Message}", e); }
             _embedding = new EmbeddedRenderMesh(tets, rest, triangles);
 
@@ -73,30 +90,41 @@ namespace Fulcrum.Unity
 
         void Push(F.SoftBody b)
         {
-            b.material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngsModulus, poissonRatio, density);
-            b.friction = friction;
-            b.solver = solver;
-            b.substeps = substeps;
-            b.dampingTime = dampingTime;
+            b.material = Material();
+            PushLive(b);
+        }
+
+        NeoHookeanMaterial Material() => new NeoHookeanMaterial(MaterialModel.StableNeoHookean, m_YoungsModulus, m_PoissonRatio, m_Density);
+
+        void PushMaterial()
+        {
+            if (_body != null && !_body.isDestroyed) _body.material = Material();
+        }
+
+        void PushLive()
+        {
+            if (_body != null && !_body.isDestroyed) PushLive(_body);
+        }
+
+        void PushLive(F.SoftBody b)
+        {
+            b.friction = m_Friction;
+            b.solver = m_Solver;
+            b.substeps = m_Substeps;
+            b.dampingTime = m_DampingTime;
         }
 
         void OnValidate()
         {
-            resolution = Mathf.Clamp(resolution, 2, 256);
-            youngsModulus = Mathf.Max(youngsModulus, 1f);
-            poissonRatio = Mathf.Clamp(poissonRatio, 0f, 0.4999f);
-            density = Mathf.Max(density, 1e-3f);
-            friction = Mathf.Max(friction, 0f);
-            substeps = Mathf.Clamp(substeps, 0, 1000);
-            dampingTime = Mathf.Max(dampingTime, 0f);
-            // The material rebuilds the body at rest; the cheap settings are pushed live.
-            if (IsLive && _body != null && !_body.isDestroyed)
-            {
-                _body.friction = friction;
-                _body.solver = solver;
-                _body.substeps = substeps;
-                _body.dampingTime = dampingTime;
-            }
+            m_Resolution = Mathf.Clamp(m_Resolution, 2, 256);
+            m_YoungsModulus = Mathf.Max(m_YoungsModulus, 1f);
+            m_PoissonRatio = Mathf.Clamp(m_PoissonRatio, 0f, 0.4999f);
+            m_Density = Mathf.Max(m_Density, 1e-3f);
+            m_Friction = Mathf.Max(m_Friction, 0f);
+            m_Substeps = Mathf.Clamp(m_Substeps, 0, 1000);
+            m_DampingTime = Mathf.Max(m_DampingTime, 0f);
+            // The material would rebuild the body at rest: inspector edits push only the cheap settings.
+            if (IsLive) PushLive();
         }
 
         // Once per rendered frame: the render mesh follows the tetrahedra (allocation-free).

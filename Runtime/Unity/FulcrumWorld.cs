@@ -18,14 +18,19 @@ namespace Fulcrum.Unity
     [DisallowMultipleComponent]
     public sealed class FulcrumWorld : MonoBehaviour
     {
-        [Tooltip("Gravity, m/s^2.")]
-        public Vector3 gravity = new Vector3(0, -9.81f, 0);
-        [Tooltip("Velocity iterations per substep (1-64).")]
-        public int iterations = 4;
-        [Tooltip("TGS substeps per step (1-64).")]
-        public int substeps = 4;
-        [Tooltip("Solver threads (1 = the main thread only).")]
-        public int threads = 1;
+        [SerializeField, Tooltip("Gravity, m/s^2.")] Vector3 m_Gravity = new Vector3(0, -9.81f, 0);
+        [SerializeField, Tooltip("Velocity iterations per substep (1-64).")] int m_Iterations = 4;
+        [SerializeField, Tooltip("TGS substeps per step (1-64).")] int m_Substeps = 4;
+        [SerializeField, Tooltip("Solver threads (1 = the main thread only).")] int m_Threads = 1;
+
+        /// <summary>Gravity, m/s^2.</summary>
+        public Vector3 gravity { get => m_Gravity; set { m_Gravity = value; PushSettings(); } }
+        /// <summary>Velocity iterations per substep (1-64).</summary>
+        public int iterations { get => m_Iterations; set { m_Iterations = value; PushSettings(); } }
+        /// <summary>TGS substeps per step (1-64).</summary>
+        public int substeps { get => m_Substeps; set { m_Substeps = value; PushSettings(); } }
+        /// <summary>Solver threads (1 = the main thread only).</summary>
+        public int threads { get => m_Threads; set { m_Threads = value; PushSettings(); } }
 
         readonly Dictionary<GameObject, F.Entity> _shadows = new Dictionary<GameObject, F.Entity>();
         readonly List<GameObject> _objects = new List<GameObject>();
@@ -84,9 +89,15 @@ namespace Fulcrum.Unity
         // Inspector edits in play mode reach the running world (values out of range are clamped, as Unity does).
         void OnValidate()
         {
-            iterations = Mathf.Clamp(iterations, 1, 64);
-            substeps = Mathf.Clamp(substeps, 1, 64);
-            threads = Mathf.Clamp(threads, 1, Limits.MaxThreads);
+            m_Iterations = Mathf.Clamp(m_Iterations, 1, 64);
+            m_Substeps = Mathf.Clamp(m_Substeps, 1, 64);
+            m_Threads = Mathf.Clamp(m_Threads, 1, Limits.MaxThreads);
+            PushSettings();
+        }
+
+        // The world checks the values (a bad one throws and changes nothing).
+        void PushSettings()
+        {
             if (_scene == null) return;
             WorldSettings s = _scene.world.Settings;
             Apply(ref s);
@@ -95,20 +106,20 @@ namespace Fulcrum.Unity
 
         void Apply(ref WorldSettings s)
         {
-            s.Gravity = gravity.ToNumerics();
-            s.Iterations = iterations;
-            s.Substeps = substeps;
-            s.Threads = threads;
+            s.Gravity = m_Gravity.ToNumerics();
+            s.Iterations = m_Iterations;
+            s.Substeps = m_Substeps;
+            s.Threads = m_Threads;
         }
 
         /// <summary>The shadow entity of <paramref name="go"/>, created (under its nearest shadowed ancestor) when missing.</summary>
         public F.Entity EntityFor(GameObject go)
         {
-            if (_shadows.TryGetValue(go, out F.Entity e) && !e.isDestroyed) return e;
+            if (_shadows.TryGetValue(go, out F.Entity? existing) && !existing!.isDestroyed) return existing;
             F.Entity? parent = null;
             for (Transform t = go.transform.parent; t != null; t = t.parent)
-                if (_shadows.TryGetValue(t.gameObject, out F.Entity p) && !p.isDestroyed) { parent = p; break; }
-            e = Scene.CreateEntity(go.name, go.transform.position.ToNumerics(), go.transform.rotation.ToNumerics(), parent);
+                if (_shadows.TryGetValue(t.gameObject, out F.Entity? p) && !p!.isDestroyed) { parent = p; break; }
+            F.Entity e = Scene.CreateEntity(go.name, go.transform.position.ToNumerics(), go.transform.rotation.ToNumerics(), parent);
             e.layer = go.layer;
             e.AddComponent<UnityMessageRelay>().Target = go;
             _shadows[go] = e;
@@ -122,10 +133,10 @@ namespace Fulcrum.Unity
         {
             foreach (FulcrumComponent c in go.GetComponents<FulcrumComponent>())
                 if (c != leaving && c.isActiveAndEnabled) return;
-            if (!_shadows.TryGetValue(go, out F.Entity e)) return;
+            if (!_shadows.TryGetValue(go, out F.Entity? e)) return;
             _shadows.Remove(go);
             _objects.Remove(go);
-            if (!e.isDestroyed) Scene.DestroyImmediate(e);
+            if (!e!.isDestroyed) Scene.DestroyImmediate(e);
         }
 
         internal void Register(F.Collider c, FulcrumCollider face) => _colliders[c] = face;
@@ -133,7 +144,7 @@ namespace Fulcrum.Unity
         internal void Unregister(F.Collider c) => _colliders.Remove(c);
 
         /// <summary>The Unity collider whose headless collider is <paramref name="c"/>, or null.</summary>
-        public FulcrumCollider? FaceOf(F.Collider? c) => c != null && _colliders.TryGetValue(c, out FulcrumCollider f) ? f : null;
+        public FulcrumCollider? FaceOf(F.Collider? c) => c != null && _colliders.TryGetValue(c, out FulcrumCollider? f) ? f : null;
 
         void FixedUpdate()
         {

@@ -39,4 +39,27 @@ namespace Fulcrum.Unity
         public static F.Mesh ToFulcrum(Mesh mesh, Vector3 scale, UnityEngine.Object owner) =>
             new F.Mesh(ScaledVertices(mesh, scale, owner), mesh.triangles) { name = mesh.name };
     }
+
+    /// <summary>
+    /// The headless mesh last built for a collider, rebuilt only when the Unity mesh or the scale
+    /// changes (a hull costs a quickhull; a changed mesh instance rebuilds the shape).
+    /// </summary>
+    internal sealed class MeshCache
+    {
+        F.Mesh? _built;
+        Mesh? _from;
+        Vector3 _scale;
+
+        /// <summary>The headless mesh for <paramref name="mesh"/> at <paramref name="scale"/>, the same instance while they do not change.</summary>
+        public F.Mesh Get(Mesh mesh, Vector3 scale, UnityEngine.Object owner)
+        {
+            if (_built == null || !ReferenceEquals(_from, mesh) || !(_scale == scale))
+            {
+                _built = UnityMeshes.ToFulcrum(mesh, scale, owner);
+                _from = mesh;
+                _scale = scale;
+            }
+            return _built;
+        }
+    }
 }
