@@ -36,5 +36,29 @@ namespace Fulcrum.Tests.Components
             Assert.That(ex.Message, Does.Contain("'Blob' has a SoftBody"));
             Assert.Throws<ArgumentException>(() => e.GetComponent<SoftBody>()!.friction = -1f);
         }
+    
+        [Test]
+        public void Solver_settings_set_before_or_after_the_mesh_reach_the_soft_body()
+        {
+            var scene = new PhysicsScene(WorldSettings.Default, 1f / 60f);
+            Entity e = scene.CreateEntity("Block", new Vector3(0, 2, 0));
+            var soft = e.AddComponent<SoftBody>();
+            soft.solver = SoftSolver.Newton;
+            soft.iterations = 3;
+            soft.mesh = SoftMesh.Box(new Vector3(0.4f), 2, 2, 2);
+            Assert.That(soft.body!.Solver, Is.EqualTo(SoftSolver.Newton));
+            Assert.That(soft.body.Iterations, Is.EqualTo(3));
+            soft.substeps = 7;
+            soft.dampingTime = 0.02f;
+            soft.solver = SoftSolver.Xpbd;
+            Assert.That(soft.body.Substeps, Is.EqualTo(7));
+            Assert.That(soft.body.DampingTime, Is.EqualTo(0.02f));
+            Assert.That(soft.body.Solver, Is.EqualTo(SoftSolver.Xpbd));
+            Assert.Throws<ArgumentException>(() => soft.substeps = -1);
+            Assert.Throws<ArgumentException>(() => soft.iterations = 0);
+            Assert.Throws<ArgumentException>(() => soft.dampingTime = float.NaN);
+            for (int k = 0; k < 30; k++) scene.Tick(1f / 60f);
+            Assert.That(soft.body.ComputeStats().Centroid.Y, Is.LessThan(2f), "it steps with the new settings");
+        }
     }
 }
