@@ -89,7 +89,7 @@ namespace Fulcrum.Unity
         {
             if (_collider != null)
             {
-                _world?.Unregister(_collider);
+                if (_world != null) _world.Unregister(_collider); // Unity's null check: not ?. on a UnityEngine.Object
                 if (!_collider.isDestroyed) _collider.scene.DestroyImmediate(_collider);
             }
             _collider = null;

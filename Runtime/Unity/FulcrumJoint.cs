@@ -66,7 +66,11 @@ namespace Fulcrum.Unity
             GetComponent<FulcrumRigidbody>().EnsureBody();
             _joint = Create(Shadow);
             PushAll(_joint);
+            FulcrumWorld.Instance.Register(this);
         }
+
+        /// <summary>Connects to <see cref="connectedBody"/> again (it was enabled after this joint).</summary>
+        internal void Reconnect() => Push();
 
         /// <summary>Pushes every field to the live headless joint (no-op while disabled).</summary>
         protected void Push()
@@ -108,6 +112,8 @@ namespace Fulcrum.Unity
 
         void OnDisable()
         {
+            FulcrumWorld? world = FulcrumWorld.Current; // Unity's null check: not ?. on a UnityEngine.Object
+            if (world != null) world.Unregister(this);
             if (_joint != null && !_joint.isDestroyed) _joint.scene.DestroyImmediate(_joint);
             _joint = null;
             ReleaseShadow();

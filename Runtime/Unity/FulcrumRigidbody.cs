@@ -44,7 +44,11 @@ namespace Fulcrum.Unity
         /// <summary>The headless rigidbody (null while disabled).</summary>
         public F.Rigidbody? Body => _body;
 
-        void OnEnable() => EnsureBody();
+        void OnEnable()
+        {
+            EnsureBody();
+            FulcrumWorld.Instance.OnBodyEnabled(this);
+        }
 
         /// <summary>Creates the headless rigidbody if it is not there yet (joints call it: their OnEnable may run first).</summary>
         internal F.Rigidbody EnsureBody()

@@ -139,6 +139,22 @@ namespace Fulcrum.Unity
             if (!e!.isDestroyed) Scene.DestroyImmediate(e);
         }
 
+        readonly List<FulcrumJoint> _joints = new List<FulcrumJoint>();
+
+        internal void Register(FulcrumJoint j)
+        {
+            if (!_joints.Contains(j)) _joints.Add(j);
+        }
+
+        internal void Unregister(FulcrumJoint j) => _joints.Remove(j);
+
+        // A body enabled after the joints naming it (scene load order): they connect to it now.
+        internal void OnBodyEnabled(FulcrumRigidbody body)
+        {
+            for (int k = 0; k < _joints.Count; k++)
+                if (_joints[k] != null && _joints[k].connectedBody == body) _joints[k].Reconnect();
+        }
+
         internal void Register(F.Collider c, FulcrumCollider face) => _colliders[c] = face;
 
         internal void Unregister(F.Collider c) => _colliders.Remove(c);

@@ -151,6 +151,22 @@ namespace Fulcrum.Tests.UnityAdapter
         }
 
         [Test]
+        public void A_joint_connects_to_a_body_enabled_after_it()
+        {
+            FulcrumRigidbody a = Ball("A", new Vector3(0, 2, 0));
+            FulcrumRigidbody b = Ball("B", new Vector3(1, 2, 0));
+            b.enabled = false;
+            FulcrumHingeJoint joint = a.gameObject.AddComponent<FulcrumHingeJoint>();
+            joint.connectedBody = b;
+            Assert.That(joint.Joint!.connectedBody, Is.Null, "B has no body yet: the world for now");
+            b.enabled = true;
+            Assert.That(joint.Joint!.connectedBody, Is.SameAs(b.Body), "connected once B is enabled");
+            Play(30);
+            Assert.That(Vector3.Distance(a.transform.position, b.transform.position), Is.EqualTo(1f).Within(0.02f), "the two fall together, held 1 m apart");
+            Assert.That(a.transform.position.y, Is.LessThan(1.5f), "and fall: no longer held by the world");
+        }
+
+        [Test]
         public void A_hinge_spring_in_Unity_units_settles_at_its_target()
         {
             FulcrumWorld.Instance.gravity = Vector3.zero;
