@@ -25,6 +25,16 @@ namespace Fulcrum.SoftBodies
         Round _round;
         long _claims;
         int _done;
+        int _posted; // the latest round's id, read without the lock by spinning workers
+
+        // A colour of fewer than two chunks runs on the caller: waking a thread costs more than
+        // a few hundred elements (measured: with 32-element chunks a 10k-tet box ran 2-3 times
+        // slower on 2 threads than on 1).
+        const int MinChunk = 256;
+
+        // Rounds follow each other within microseconds (colour after colour): a worker spins
+        // this many short waits for the next one before it blocks on the lock.
+        const int SpinRounds = 100;
         bool _stopped; // guarded by _lock
 
         public ParallelRanges(int threads)
@@ -55,7 +65,7 @@ namespace Fulcrum.SoftBodies
         {
             int count = end - start;
             if (count <= 0) return;
-            int chunks = Math.Min(_threads * 2, count / 32);
+            int chunks = Math.Min(_threads * 2, count / MinChunk);
             if (chunks <= 1 || _threads == 1)
             {
                 job.Execute(start, end);
@@ -69,6 +79,7 @@ namespace Fulcrum.SoftBodies
                 round = _round;
                 Volatile.Write(ref _done, 0);
                 Volatile.Write(ref _claims, (long)round.Id << 32);
+                Volatile.Write(ref _posted, round.Id);
                 Monitor.PulseAll(_lock);
             }
             Work(round);
@@ -97,6 +108,7 @@ namespace Fulcrum.SoftBodies
             while (true)
             {
                 Round round;
+                for (int spin = 0; spin < SpinRounds && Volatile.Read(ref _posted) == seen; spin++) Thread.SpinWait(20);
                 lock (_lock)
                 {
                     while (!_stopped && (_round.Id == seen || _round.Job == null)) Monitor.Wait(_lock);
