@@ -23,12 +23,6 @@ namespace Fulcrum.Unity
         protected override F.Collider Create(F.Entity shadow) => shadow.AddComponent<F.MeshCollider>();
 
         /// <inheritdoc/>
-        protected override void PushShape(F.Collider c)
-        {
-            var m = (F.MeshCollider)c;
-            m.convex = true;
-            F.Mesh built = _cache.Get(UnityMeshes.MeshOf(this, m_Mesh), transform.lossyScale, this);
-            if (!ReferenceEquals(m.sharedMesh, built)) m.sharedMesh = built;
-        }
+        protected override void PushShape(F.Collider c) => UnityMeshes.Assign((F.MeshCollider)c, true, m_Mesh, this, _cache);
     }
 }

@@ -35,6 +35,18 @@ namespace Fulcrum.Unity
             return mesh;
         }
 
+        /// <summary>
+        /// Gives <paramref name="collider"/> the mesh of <paramref name="owner"/> (its assigned one, or its
+        /// MeshFilter's) at the owner's lossyScale, as a hull when <paramref name="convex"/>; the
+        /// shape is rebuilt only when the mesh or the scale changed.
+        /// </summary>
+        internal static void Assign(F.MeshCollider collider, bool convex, Mesh? assigned, Component owner, MeshCache cache)
+        {
+            collider.convex = convex;
+            F.Mesh built = cache.Get(MeshOf(owner, assigned), owner.transform.lossyScale, owner);
+            if (!ReferenceEquals(collider.sharedMesh, built)) collider.sharedMesh = built;
+        }
+
         /// <summary>A headless <see cref="F.Mesh"/> of <paramref name="mesh"/> at <paramref name="scale"/>.</summary>
         public static F.Mesh ToFulcrum(Mesh mesh, Vector3 scale, UnityEngine.Object owner) =>
             new F.Mesh(ScaledVertices(mesh, scale, owner), mesh.triangles) { name = mesh.name };

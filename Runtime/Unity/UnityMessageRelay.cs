@@ -22,68 +22,61 @@ namespace Fulcrum.Unity
         readonly List<IFulcrumTriggerHandler> _trigger = new List<IFulcrumTriggerHandler>();
         readonly List<IFulcrumJointBreakHandler> _jointBreak = new List<IFulcrumJointBreakHandler>();
 
-        List<IFulcrumCollisionHandler> CollisionHandlers()
+        // The target's receivers of one kind, into a reused list (GetComponents(List) does not allocate).
+        List<T> Handlers<T>(List<T> list)
         {
-            _collision.Clear();
-            if (Target != null) Target.GetComponents(_collision);
-            return _collision;
-        }
-
-        List<IFulcrumTriggerHandler> TriggerHandlers()
-        {
-            _trigger.Clear();
-            if (Target != null) Target.GetComponents(_trigger);
-            return _trigger;
+            list.Clear();
+            if (Target != null) Target.GetComponents(list);
+            return list;
         }
 
         /// <inheritdoc/>
         protected override void OnCollisionEnter(F.Collision c)
         {
-            List<IFulcrumCollisionHandler> h = CollisionHandlers();
+            List<IFulcrumCollisionHandler> h = Handlers(_collision);
             for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionEnter(c);
         }
 
         /// <inheritdoc/>
         protected override void OnCollisionStay(F.Collision c)
         {
-            List<IFulcrumCollisionHandler> h = CollisionHandlers();
+            List<IFulcrumCollisionHandler> h = Handlers(_collision);
             for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionStay(c);
         }
 
         /// <inheritdoc/>
         protected override void OnCollisionExit(F.Collision c)
         {
-            List<IFulcrumCollisionHandler> h = CollisionHandlers();
+            List<IFulcrumCollisionHandler> h = Handlers(_collision);
             for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionExit(c);
         }
 
         /// <inheritdoc/>
         protected override void OnTriggerEnter(F.Collider other)
         {
-            List<IFulcrumTriggerHandler> h = TriggerHandlers();
+            List<IFulcrumTriggerHandler> h = Handlers(_trigger);
             for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerEnter(other);
         }
 
         /// <inheritdoc/>
         protected override void OnTriggerStay(F.Collider other)
         {
-            List<IFulcrumTriggerHandler> h = TriggerHandlers();
+            List<IFulcrumTriggerHandler> h = Handlers(_trigger);
             for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerStay(other);
         }
 
         /// <inheritdoc/>
         protected override void OnTriggerExit(F.Collider other)
         {
-            List<IFulcrumTriggerHandler> h = TriggerHandlers();
+            List<IFulcrumTriggerHandler> h = Handlers(_trigger);
             for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerExit(other);
         }
 
         /// <inheritdoc/>
         protected override void OnJointBreak(float breakForce)
         {
-            _jointBreak.Clear();
-            if (Target != null) Target.GetComponents(_jointBreak);
-            for (int i = 0; i < _jointBreak.Count; i++) _jointBreak[i].OnFulcrumJointBreak(breakForce);
+            List<IFulcrumJointBreakHandler> h = Handlers(_jointBreak);
+            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumJointBreak(breakForce);
         }
     }
 }

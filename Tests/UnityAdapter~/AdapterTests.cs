@@ -74,6 +74,36 @@ namespace Fulcrum.Tests.UnityAdapter
             Assert.That(FulcrumWorld.Instance.Scene.world.Settings.Gravity.Z, Is.EqualTo(-1f));
         }
 
+        // What the inspector does in play mode: write the serialized field, then call OnValidate.
+        static void InspectorEdit(object component, string field, object value)
+        {
+            Type t = component.GetType();
+            FieldInfo? f = null;
+            for (Type? k = t; k != null && f == null; k = k.BaseType) f = k.GetField(field, BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.DeclaredOnly);
+            f!.SetValue(component, value);
+            MethodInfo? validate = null;
+            for (Type? k = t; k != null && validate == null; k = k.BaseType) validate = k.GetMethod("OnValidate", BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.DeclaredOnly);
+            validate!.Invoke(component, null);
+        }
+
+        [Test]
+        public void Inspector_edits_in_play_mode_are_clamped_as_Unity_does_and_reach_the_world()
+        {
+            FulcrumBoxCollider ground = Ground();
+            FulcrumRigidbody ball = Ball("Ball", new Vector3(0, 3, 0));
+            InspectorEdit(ball, "m_Mass", -5f);
+            Assert.That(ball.mass, Is.EqualTo(Limits.MinMass), "clamped, not thrown");
+            Assert.That(ball.Body!.mass, Is.EqualTo(Limits.MinMass));
+            InspectorEdit(ground, "m_Size", new Vector3(4, 1, 4));
+            Assert.That(((F.BoxCollider)ground.Collider!).size.X, Is.EqualTo(4f));
+            InspectorEdit(ground, "m_Bounciness", 3f);
+            Assert.That(ground.bounciness, Is.EqualTo(1f));
+            Assert.That(ground.material!.bounciness, Is.EqualTo(1f));
+            FulcrumWorld world = FulcrumWorld.Instance;
+            InspectorEdit(world, "m_Iterations", 0);
+            Assert.That(world.Scene.world.Settings.Iterations, Is.EqualTo(1));
+        }
+
         [Test]
         public void A_child_collider_of_a_moving_body_keeps_its_shape_from_step_to_step()
         {
@@ -256,7 +286,7 @@ namespace Fulcrum.Tests.UnityAdapter
 
             MethodInfo late = typeof(FulcrumSoftBody).GetMethod("LateUpdate", BindingFlags.Instance | BindingFlags.NonPublic)!;
             var call = (Action)late.CreateDelegate(typeof(Action), soft);
-            Assert.That(SteadyStateBytes(call), Is.EqualTo(0), "LateUpdate allocates nothing");
+            Assert.That(Fulcrum.Tests.Components.AllocationProbe.SteadyStateBytes(call), Is.EqualTo(0), "LateUpdate allocates nothing");
         }
 
         [Test]
@@ -279,23 +309,6 @@ namespace Fulcrum.Tests.UnityAdapter
             string dir = Path.Combine(FindRoot(), "Runtime", "Unity");
             foreach (string file in Directory.GetFiles(dir, "*.cs"))
                 Assert.That(File.ReadAllText(file), Does.Not.Contain("Fake"), $"{Path.GetFileName(file)} reaches into the stand-in's test hooks");
-        }
-
-        // The fewest bytes 200 calls allocate in any of three windows after a warm-up: the
-        // runtime's tiered JIT may allocate once in the background; a real per-call allocation
-        // shows in every window.
-        static long SteadyStateBytes(Action call)
-        {
-            for (int k = 0; k < 400; k++) call();
-            System.Threading.Thread.Sleep(150);
-            long best = long.MaxValue;
-            for (int w = 0; w < 3; w++)
-            {
-                long before = GC.GetAllocatedBytesForCurrentThread();
-                for (int k = 0; k < 200; k++) call();
-                best = Math.Min(best, GC.GetAllocatedBytesForCurrentThread() - before);
-            }
-            return best;
         }
 
         static string FindRoot()
