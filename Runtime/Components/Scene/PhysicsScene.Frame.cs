@@ -121,6 +121,7 @@ namespace Fulcrum.Components
             BeforeStepConstraints();
             _world.Step(dt);
             AfterStep();
+            RecordStep();
             DispatchMessages();
             DispatchJointBreaks();
         }
