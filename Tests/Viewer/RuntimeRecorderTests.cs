@@ -89,8 +89,15 @@ namespace Fulcrum.Tests.Viewer
             Assert.That(world.GetBody(box).IsAwake, Is.False, "the box falls asleep");
             for (int n = 0; n < 5; n++) world.Step(Dt);
             var memory = new MemoryStream();
-            using (var recorder = new Recorder(world, Dt, memory, ownsStream: false)) recorder.Record();
-            Recording.Frame frame = Recording.Read(memory.ToArray()).Frames[0];
+            using (var recorder = new Recorder(world, Dt, memory, ownsStream: false))
+            {
+                recorder.Record();
+                recorder.SleepingContacts = true;
+                recorder.Record();
+            }
+            Recording rec = Recording.Read(memory.ToArray());
+            Assert.That(rec.Frames[0].Contacts, Is.Empty, "by default only the step's solved contacts");
+            Recording.Frame frame = rec.Frames[1];
             Assert.That(frame.BodyFlags[1] & RecordingFormat.BodyAsleep, Is.EqualTo(RecordingFormat.BodyAsleep));
             Assert.That(frame.Contacts, Has.Length.EqualTo(4), "the four corners of the face it rests on");
             Assert.That(frame.Contacts, Has.All.Matches<Recording.Contact>(c => c.BodyA + c.BodyB == 1 && Math.Abs(c.Normal.Y) > 0.999f));
