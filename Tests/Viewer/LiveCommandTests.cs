@@ -122,8 +122,10 @@ namespace Fulcrum.Tests.Viewer
             TextWriter shared = TextWriter.Synchronized(output);
             Task<int> run = Task.Run(() => RunCommand.Run(args, shared, stop.Token));
             var deadline = DateTime.UtcNow.AddSeconds(30);
-            while (!output.ToString().Contains("still serving") && DateTime.UtcNow < deadline && !run.IsCompleted) await Task.Delay(20);
-            Assert.That(output.ToString(), Does.Contain("live: run finished; still serving"));
+            // The synchronized writer locks itself while the run writes; read under the same lock.
+            string Text() { lock (shared) return output.ToString(); }
+            while (!Text().Contains("still serving") && DateTime.UtcNow < deadline && !run.IsCompleted) await Task.Delay(20);
+            Assert.That(Text(), Does.Contain("live: run finished; still serving"));
             (byte[] bytes, _) = await ReceiveAll(port, TimeSpan.FromSeconds(30));
             Assert.That(run.IsCompleted, Is.False, "still serving");
             stop.Cancel();

@@ -231,6 +231,34 @@ namespace Fulcrum.Tests.Viewer
         }
 
         [Test]
+        public void Disposing_a_threaded_bridge_closes_its_recording_whole()
+        {
+            var memory = new MemoryStream();
+            var closed = new ClosingStream(memory);
+            PhysicsBridge bridge = FallingBall(200, out _);
+            bridge.StartRecording(closed, ownsStream: true);
+            var deadline = DateTime.UtcNow.AddSeconds(10);
+            while (bridge.ThreadSteps < 10 && DateTime.UtcNow < deadline) Thread.Sleep(5);
+            bridge.Dispose();
+            Assert.That(closed.Closed, Is.True, "the bridge owned the stream");
+            Recording rec = Recording.Read(memory.ToArray());
+            Assert.That(rec.Truncated, Is.False);
+            Assert.That(rec.Frames, Has.Count.GreaterThanOrEqualTo(5));
+            AssertFreeFall(rec, 1f / 200);
+        }
+
+        // Keeps the bytes readable after the recorder closes it.
+        sealed class ClosingStream : MemoryStream
+        {
+            readonly MemoryStream _into;
+            public bool Closed;
+            public ClosingStream(MemoryStream into) => _into = into;
+            public override void Write(byte[] buffer, int offset, int count) => _into.Write(buffer, offset, count);
+            public override void Write(ReadOnlySpan<byte> buffer) => _into.Write(buffer);
+            protected override void Dispose(bool disposing) { Closed = true; base.Dispose(disposing); }
+        }
+
+        [Test]
         public void The_bridge_allocates_nothing_per_frame_while_recording()
         {
             using PhysicsBridge bridge = FallingBall(0, out _);
