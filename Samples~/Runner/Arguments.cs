@@ -1,19 +1,28 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.Linq;
 
 namespace Fulcrum.Runner;
 
 /// <summary>
-/// The flags of one command: <c>--name value</c> pairs and positional arguments. Every
-/// accessor checks its value and throws a <see cref="UsageException"/> naming the flag.
+/// The flags of one command: <c>--name value</c> pairs, valueless switches (<c>--live</c>,
+/// present or not) and positional arguments. Every accessor checks its value and throws a
+/// <see cref="UsageException"/> naming the flag.
 /// </summary>
 sealed class Arguments
 {
     readonly Dictionary<string, string> _flags = new();
     readonly List<string> _positional = new();
+    readonly HashSet<string> _switches = new();
 
     public Arguments(string command, IReadOnlyList<string> args, int start, params string[] allowed)
+        : this(command, args, start, allowed, Array.Empty<string>())
+    {
+    }
+
+    /// <summary>Flags that take a value (<paramref name="allowed"/>) and switches that take none (<paramref name="switches"/>).</summary>
+    public Arguments(string command, IReadOnlyList<string> args, int start, string[] allowed, string[] switches)
     {
         Command = command;
         for (int i = start; i < args.Count; i++)
@@ -32,8 +41,14 @@ sealed class Arguments
                 name = a[..eq];
                 value = a[(eq + 1)..];
             }
+            if (Array.IndexOf(switches, name) >= 0)
+            {
+                if (value != null) throw new UsageException($"{name}: takes no value, got '{Fulcrum.Scenes.SceneError.Clip(value)}'");
+                if (!_switches.Add(name)) throw new UsageException($"{name}: given twice");
+                continue;
+            }
             if (Array.IndexOf(allowed, name) < 0)
-                throw new UsageException($"{command}: unknown flag '{name}' (expected {string.Join(", ", allowed)})");
+                throw new UsageException($"{command}: unknown flag '{name}' (expected {string.Join(", ", allowed.Concat(switches))})");
             if (value == null)
             {
                 if (i + 1 >= args.Count) throw new UsageException($"{name}: missing value");
@@ -47,7 +62,8 @@ sealed class Arguments
 
     public IReadOnlyList<string> Positional => _positional;
 
-    public bool Has(string flag) => _flags.ContainsKey(flag);
+    /// <summary>Whether a flag (with its value) or a switch was given.</summary>
+    public bool Has(string flag) => _flags.ContainsKey(flag) || _switches.Contains(flag);
 
     public string? String(string flag) => _flags.TryGetValue(flag, out string? v) ? v : null;
 

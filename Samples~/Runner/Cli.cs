@@ -14,6 +14,7 @@ namespace Fulcrum.Runner;
 ///             (also --seconds S | --steps N, --dt X, --threads N)
 /// fulcrum check SCENE.json
 /// fulcrum run SCENE.json --record OUT.frec  a recording for the browser viewer
+/// fulcrum run SCENE.json --live [--port N]  the same, streamed to the viewer while it runs
 /// fulcrum view [OUT.frec] [--port N]        serves the viewer (Viewer~/dist) and the recording on localhost
 /// </code>
 /// Flags override the scene file. A bad scene or flag exits non-zero with one line naming
@@ -37,6 +38,10 @@ public static class Cli
                       [--save-state FILE] [--restore-state FILE]
                                            save the world state after the run / restore one before it
                       [--record OUT.frec]  (a recording for 'fulcrum view'; --every K applies to it too)
+                      [--live [--port N] [--viewer DIR] [--live-speed X] [--live-exit]]
+                                           stream the run to the browser viewer on http://127.0.0.1:8765/
+                                           at X times real time (default 1); serve until Ctrl+C, or
+                                           exit when the run ends with --live-exit
           fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
                       [--seconds S | --steps N] [--dt X] [--threads N] [--soft-solver xpbd,newton]
           fulcrum check SCENE.json         validate only: every error with its JSON path
@@ -54,7 +59,7 @@ public static class Cli
             if (args.Length == 0) return ReportCommand.Run(args, output);
             switch (args[0])
             {
-                case "run": return RunCommand.Run(new Arguments("run", args, 1, RunCommand.Flags), output);
+                case "run": return RunCommand.Run(new Arguments("run", args, 1, RunCommand.Flags, RunCommand.Switches), output);
                 case "check": return CheckCommand.Run(new Arguments("check", args, 1), output, error);
                 case "sweep": return SweepCommand.Run(new Arguments("sweep", args, 1, SweepCommand.Flags), output);
                 case "report": return ReportCommand.Run(args[1..], output);

@@ -28,20 +28,13 @@ static class RecordCommand
     /// <summary>
     /// Opens the recording of <paramref name="scene"/> and writes its header and frame 0.
     /// Frames follow every <paramref name="every"/>-th step and the last one (<paramref name="steps"/>).
+    /// With <paramref name="live"/> the recording goes to the live viewers, and to the file
+    /// <paramref name="path"/> as well when it is given.
     /// </summary>
-    public static Session Open(string path, SceneInstance scene, int steps, int every)
+    public static Session Open(string? path, SceneInstance scene, int steps, int every, LiveServer? live = null)
     {
-        FileStream stream;
-        try
-        {
-            string? dir = System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(path));
-            if (dir != null) Directory.CreateDirectory(dir);
-            stream = new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.Read, 1 << 16);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
-        {
-            throw new UsageException($"{Flag}: cannot write '{path}': {e.Message}");
-        }
+        Stream? file = path != null ? OpenFile(path) : null;
+        Stream stream = live != null ? live.OpenStream(file) : file ?? throw new ArgumentNullException(nameof(path));
         var names = new System.Collections.Generic.Dictionary<BodyHandle, string>();
         for (int i = 0; i < scene.BodyHandles.Count; i++) names[scene.BodyHandles[i]] = scene.BodyName(i);
         var recorder = new Recorder(scene.World, scene.Timestep, stream, ownsStream: true,
@@ -50,12 +43,26 @@ static class RecordCommand
         return new Session(path, recorder, steps, every);
     }
 
+    static FileStream OpenFile(string path)
+    {
+        try
+        {
+            string? dir = System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(path));
+            if (dir != null) Directory.CreateDirectory(dir);
+            return new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.Read, 1 << 16);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            throw new UsageException($"{Flag}: cannot write '{path}': {e.Message}");
+        }
+    }
+
     /// <summary>An open recording of one run.</summary>
     public sealed class Session : IDisposable
     {
         readonly int _steps, _every;
 
-        public Session(string path, Recorder recorder, int steps, int every)
+        public Session(string? path, Recorder recorder, int steps, int every)
         {
             Path = path;
             Recorder = recorder;
@@ -65,7 +72,8 @@ static class RecordCommand
             AfterStep = Record;
         }
 
-        public string Path { get; }
+        /// <summary>The --record file, or null for a live run without one.</summary>
+        public string? Path { get; }
         public Recorder Recorder { get; }
 
         /// <summary>The run loop's per-step callback (step numbers from 1).</summary>
@@ -78,8 +86,9 @@ static class RecordCommand
 
         /// <summary>One line for the run's output: file, frames, size and what recording cost per frame.</summary>
         public string Summary() =>
-            $"recording: {Path}, {Recorder.FrameCount} frames, {Recorder.BytesWritten / 1024.0:F1} KiB, " +
-            $"{Recorder.RecordMilliseconds / Math.Max(1, Recorder.FrameCount):F3} ms/frame to record; view it with 'fulcrum view {Path}'";
+            $"recording: {Path ?? "live"}, {Recorder.FrameCount} frames, {Recorder.BytesWritten / 1024.0:F1} KiB, " +
+            $"{Recorder.RecordMilliseconds / Math.Max(1, Recorder.FrameCount):F3} ms/frame to record" +
+            (Path != null ? $"; view it with 'fulcrum view {Path}'" : "");
 
         public void Dispose() => Recorder.Dispose();
     }

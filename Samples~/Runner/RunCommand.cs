@@ -8,12 +8,18 @@ namespace Fulcrum.Runner;
 static class RunCommand
 {
     public static readonly string[] Flags =
-        { "--seconds", "--steps", "--dt", "--solver", "--iterations", "--substeps", "--threads", "--trace", "--every", RecordCommand.Flag, "--save-state", "--restore-state" };
+    {
+        "--seconds", "--steps", "--dt", "--solver", "--iterations", "--substeps", "--threads", "--trace", "--every", RecordCommand.Flag,
+        "--save-state", "--restore-state", "--port", "--viewer", LiveCommand.SpeedFlag,
+    };
+
+    /// <summary>Flags without a value.</summary>
+    public static readonly string[] Switches = LiveCommand.Switches;
 
     /// <summary>Simulated time when neither --steps nor --seconds is given, s.</summary>
     public const float DefaultSeconds = 5f;
 
-    public static int Run(Arguments a, TextWriter output)
+    public static int Run(Arguments a, TextWriter output, System.Threading.CancellationToken stop = default)
     {
         // Every flag and the scene are checked before anything runs or is written.
         string path = a.Scene();
@@ -22,7 +28,8 @@ static class RunCommand
         if (tracePath != null && tracePath.Length == 0) throw new UsageException("--trace: expected a file name");
         if (tracePath != null && Directory.Exists(tracePath)) throw new UsageException($"--trace: '{tracePath}' is a directory; give a file name such as {Path.Combine(tracePath, "trace.csv")}");
         string? recordPath = RecordCommand.PathOf(a);
-        if (a.Has("--every") && tracePath == null && recordPath == null) throw new UsageException("--every: only applies with --trace or --record");
+        LiveCommand.Options? live = LiveCommand.Check(a);
+        if (a.Has("--every") && tracePath == null && recordPath == null && live == null) throw new UsageException("--every: only applies with --trace or --record (or --live)");
         string? restorePath = a.String("--restore-state"), savePath = a.String("--save-state");
         StateFlags.Check(restorePath, savePath);
         WorldSettings settings = SceneSetup.Settings(a);
@@ -42,11 +49,20 @@ static class RunCommand
         if (softNote != null) output.WriteLine("note: " + softNote);
         if (restorePath != null) StateFlags.Restore(scene, restorePath, output);
 
+        using LiveServer? server = live != null ? LiveCommand.Start(live, output) : null;
         using TraceWriter? trace = tracePath != null ? OpenTrace(tracePath, scene, soft) : null;
-        using RecordCommand.Session? recording = recordPath != null ? RecordCommand.Open(recordPath, scene, steps, every) : null;
-        RunResult result = SceneRun.Run(scene, steps, doc.Timestep, soft, trace, every, recording?.AfterStep);
+        RunResult result;
+        string? recordingSummary = null;
+        using (RecordCommand.Session? recording = recordPath != null || server != null ? RecordCommand.Open(recordPath, scene, steps, every, server) : null)
+        {
+            Action<int>? afterStep = recording?.AfterStep;
+            if (live != null) afterStep = LiveCommand.Paced(afterStep, doc.Timestep, live.Speed);
+            result = SceneRun.Run(scene, steps, doc.Timestep, soft, trace, every, afterStep);
+            recordingSummary = recording?.Summary();
+        }
+        server?.End();
         if (trace != null) output.WriteLine($"trace: {trace.BodyPath}, {trace.WorldPath}" + (trace.SoftPath != null ? $", {trace.SoftPath}" : ""));
-        if (recording != null) output.WriteLine(recording.Summary());
+        if (recordingSummary != null) output.WriteLine(recordingSummary);
 
         output.WriteLine();
         var table = new TextTable("steps", "ms/step median", "ms/step p95", "max penetration (m)", "max joint error (m)",
@@ -56,7 +72,9 @@ static class RunCommand
             TextTable.Number(result.VolumeError), TextTable.Number(result.MinJ));
         table.Write(output);
         if (savePath != null) StateFlags.Save(scene, savePath, output);
-        return ReportDivergence(scene, output);
+        int code = ReportDivergence(scene, output);
+        if (server != null) LiveCommand.Finish(server, live!, output, stop);
+        return code;
     }
 
     /// <summary>

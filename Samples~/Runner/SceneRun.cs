@@ -21,7 +21,7 @@ static class SceneRun
         World world = scene.World;
         var ms = new double[steps];
         float maxPenetration = 0, maxJointError = 0, volumeError = 0, minJ = float.PositiveInfinity;
-        float energyStart = Energy.Kinetic(world) + Energy.Potential(world);
+        float energyStart = RigidEnergy.Kinetic(world) + RigidEnergy.Potential(world);
         Ballistic? ballistic = Ballistic.Of(scene);
         trace?.Record(0, scene, soft, 0);
         Sample(soft, ref volumeError, ref minJ);
@@ -43,7 +43,7 @@ static class SceneRun
             MaxPenetration = maxPenetration,
             MaxJointError = scene.JointHandles.Count > 0 ? maxJointError : null,
             EnergyStart = energyStart,
-            EnergyEnd = Energy.Kinetic(world) + Energy.Potential(world),
+            EnergyEnd = RigidEnergy.Kinetic(world) + RigidEnergy.Potential(world),
             VolumeError = soft != null ? volumeError : null,
             MinJ = soft != null ? minJ : null,
             ClosedFormError = ballistic?.MaxError,

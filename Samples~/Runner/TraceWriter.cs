@@ -70,8 +70,8 @@ sealed class TraceWriter : IDisposable
             _bodies.Write(_line.Append('\n'));
         }
         _line.Clear().Append(stepText).Append(',').Append(time)
-            .Append(',').Append(F(Energy.Kinetic(world)))
-            .Append(',').Append(F(Energy.Potential(world)))
+            .Append(',').Append(F(RigidEnergy.Kinetic(world)))
+            .Append(',').Append(F(RigidEnergy.Potential(world)))
             .Append(',').Append(F(world.MaxPenetration))
             .Append(',').Append(F(world.MaxJointError))
             .Append(',').Append(world.ContactCount.ToString(CultureInfo.InvariantCulture))

@@ -55,7 +55,7 @@ static class ViewCommand
         return Cli.ExitOk;
     }
 
-    static void Stop(HttpListener listener)
+    internal static void Stop(HttpListener listener)
     {
         try { listener.Stop(); }
         catch (ObjectDisposedException) { }
@@ -70,7 +70,7 @@ static class ViewCommand
     }
 
     /// <summary>The built viewer: --viewer DIR, else Viewer~/dist above the current folder or above this program.</summary>
-    static string FindViewer(string? given)
+    internal static string FindViewer(string? given)
     {
         if (given != null)
         {
@@ -87,7 +87,7 @@ static class ViewCommand
         throw new UsageException("view: the viewer is not built (cd Viewer~ && npm ci && npm run build), or give --viewer DIR");
     }
 
-    static HttpListener Listen(int? port, out int bound)
+    internal static HttpListener Listen(int? port, out int bound)
     {
         int first = port ?? DefaultPort, tries = port != null ? 1 : 20;
         for (int p = first; p < first + tries; p++)
@@ -108,7 +108,7 @@ static class ViewCommand
         throw new UsageException(port != null ? $"--port: {port} is in use" : $"view: ports {first}..{first + tries - 1} are all in use; give --port N");
     }
 
-    static void Serve(HttpListenerContext context, string dist, string? file)
+    internal static void Serve(HttpListenerContext context, string dist, string? file)
     {
         HttpListenerResponse response = context.Response;
         try

@@ -113,7 +113,7 @@ namespace Fulcrum.Tests.Viewer
         {
             foreach (SoftMesh mesh in new[] { SoftMesh.Box(new Vector3(1, 0.5f, 0.7f), 3, 2, 2), SoftMesh.Cloth(1, 1, 3, 3) })
             {
-                var strain = new Runner.ElementStrain(mesh);
+                var strain = new ElementStrain(mesh);
                 Vector3[] x = mesh.Vertices.ToArray();
                 var rotation = Quaternion.CreateFromYawPitchRoll(0.3f, 0.2f, 0.1f);
                 for (int i = 0; i < x.Length; i++) x[i] = Vector3.Transform(new Vector3(1.1f * x[i].X, x[i].Y, x[i].Z), rotation) + new Vector3(5, 0, 0);

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The viewer's CI check (.ci/run: "check viewer"): installs the locked npm packages, records
 # two scenes with the C# runner, type-checks and builds the viewer, runs the reader's unit
-# tests (vitest) on those recordings and the browser test (scripts/e2e.mjs, Debian's
-# Chromium through playwright-core). Any failure, a missing browser included, exits non-zero.
+# tests (vitest) on those recordings and the browser tests (scripts/e2e.mjs on a recording,
+# scripts/e2e-live.mjs on a run streamed by 'fulcrum run --live'; Debian's Chromium through
+# playwright-core). Any failure, a missing browser included, exits non-zero.
 # Usage: bash Viewer~/scripts/ci.sh   (from anywhere; builds the runner if it is not built)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -49,5 +50,8 @@ npx vitest run
 
 step "browser test (Chromium: $("$CHROMIUM" --version 2> /dev/null | head -n 1))"
 node scripts/e2e.mjs
+
+step "live browser test (fulcrum run --live)"
+SCENES="$repo/Samples~/Scenes" node scripts/e2e-live.mjs
 
 step "done; screenshots in $OUT"

@@ -1,7 +1,8 @@
-// The viewer's page: loading (URL ?file=, drag and drop, file picker), playback, the
-// panel, and a small hook (window.fulcrumViewer) that the browser tests drive.
+// The viewer's page: loading (URL ?file=, drag and drop, file picker, or ?live= for a run
+// streamed by `fulcrum run --live`), playback, the panel, and a small hook
+// (window.fulcrumViewer) that the browser tests drive.
 import { Vector3 } from 'three';
-import { Recording, BodyType, BODY_ASLEEP, JOINT_KINDS } from './reader';
+import { Recording, RecordingError, BodyType, BODY_ASLEEP, JOINT_KINDS } from './reader';
 import { View3D, Toggles } from './view3d';
 import { Chart, profileChart, energyChart } from './charts';
 
@@ -22,30 +23,46 @@ let playClock = 0; // simulated seconds since the first frame
 let lastTick = 0;
 let times: Float64Array = new Float64Array(0);
 let charts: Chart[] = [];
+let recName = '';
+let following = true;
 
 function setStatus(text: string): void { status.textContent = text; }
 
 function open(data: ArrayBuffer, name: string): void {
+  let r: Recording;
   try {
-    const r = new Recording(data);
+    r = new Recording(data);
     if (r.frameCount === 0) throw new Error('the recording has no frames');
-    rec = r;
   } catch (e) {
     setStatus(`${name}: ${(e as Error).message}`);
     return;
   }
-  setStatus(rec.truncated ? 'the file ends inside a frame (the run was cut off); that frame is left out' : '');
+  closeLive();
+  show(r, name);
+  setStatus(r.truncated ? 'the file ends inside a frame (the run was cut off); that frame is left out' : '');
+  goTo(0);
+}
+
+// Puts a recording on screen (the caller picks the frame).
+function show(r: Recording, name: string): void {
+  rec = r;
+  recName = name;
   $('drop-hint').style.display = 'none';
-  $('file-name').textContent = `${name} — ${rec.header.bodies.length} bodies, ${rec.header.joints.length} joints, ${rec.header.softBodies.length} soft bodies, ${rec.frameCount} frames`;
+  view.load(r);
+  setPlaying(false);
+  grown();
+}
+
+// The parts that depend on the number of frames: the file line, the time line and the charts.
+function grown(): void {
+  if (!rec) return;
+  $('file-name').textContent = `${recName} — ${rec.header.bodies.length} bodies, ${rec.header.joints.length} joints, ${rec.header.softBodies.length} soft bodies, ${rec.frameCount} frames`;
   times = rec.series().time;
   scrub.max = String(rec.frameCount - 1);
-  view.load(rec);
   charts = [
     profileChart($('chart-profile'), $('legend-profile'), rec),
     energyChart($('chart-energy'), $('legend-energy'), rec),
   ];
-  setPlaying(false);
-  goTo(0);
 }
 
 function goTo(i: number): void {
@@ -57,6 +74,8 @@ function goTo(i: number): void {
   frameLabel.textContent = `step ${f.step}  t ${f.time.toFixed(3)} s  (${current + 1}/${rec.frameCount})`;
   for (const c of charts) c.cursor(current);
   describeSelection();
+  // Live: on the newest frame, the view follows the frames that arrive; anywhere else it stays.
+  following = current === rec.frameCount - 1;
 }
 
 function setPlaying(on: boolean): void {
@@ -176,9 +195,88 @@ viewport.addEventListener('drop', async e => {
   if (file) open(await file.arrayBuffer(), file.name);
 });
 
+// Live mode: `fulcrum run SCENE --live` serves this page with ?live=/live and streams the
+// recording over a WebSocket there (Documentation~/RecordingFormat.md, "Live mode"): binary
+// messages whose concatenation is the .frec bytes, then the text message "end".
+interface Live { socket: WebSocket; bytes: Uint8Array; length: number; ended: boolean; pending: boolean; charted: number }
+let live: Live | undefined;
+
+function openLive(path: string): void {
+  const url = new URL(path, location.href);
+  url.protocol = url.protocol === 'https:' ? 'wss:' : 'ws:';
+  const socket = new WebSocket(url);
+  socket.binaryType = 'arraybuffer';
+  const l: Live = { socket, bytes: new Uint8Array(1 << 16), length: 0, ended: false, pending: false, charted: 0 };
+  live = l;
+  setStatus(`live: connecting to ${url} …`);
+  socket.onmessage = e => {
+    if (live !== l) return;
+    if (typeof e.data === 'string') l.ended = l.ended || e.data === 'end';
+    else append(l, new Uint8Array(e.data as ArrayBuffer));
+    if (!l.pending) { l.pending = true; requestAnimationFrame(now => updateLive(l, now)); }
+  };
+  socket.onerror = () => { if (live === l && !rec) setStatus(`live: cannot connect to ${url}`); };
+  socket.onclose = () => { if (live === l && !l.ended) setStatus(`live: disconnected after ${rec?.frameCount ?? 0} frames (the run was stopped)`); };
+}
+
+function closeLive(): void {
+  if (!live) return;
+  const l = live;
+  live = undefined;
+  l.socket.close();
+}
+
+function append(l: Live, chunk: Uint8Array): void {
+  if (l.length + chunk.length > l.bytes.length) {
+    const grownBytes = new Uint8Array(Math.max(2 * l.bytes.length, l.length + chunk.length));
+    grownBytes.set(l.bytes.subarray(0, l.length));
+    l.bytes = grownBytes;
+  }
+  l.bytes.set(chunk, l.length);
+  l.length += chunk.length;
+}
+
+// Once per animation frame at most: new frames are listed, the time line grows (the charts
+// every half second) and the view moves to the newest frame unless the user went back.
+function updateLive(l: Live, now: number): void {
+  l.pending = false;
+  if (live !== l) return;
+  const data = l.bytes.subarray(0, l.length);
+  let added: number;
+  if (!rec) {
+    let r: Recording;
+    try {
+      r = new Recording(data);
+    } catch (e) {
+      // The header may still be arriving.
+      if (!(e instanceof RecordingError && /ends early/.test(e.message))) setStatus(`live: ${(e as Error).message}`);
+      return;
+    }
+    if (r.frameCount === 0) return;
+    show(r, 'live run');
+    following = true;
+    added = r.frameCount;
+  } else {
+    added = rec.extend(data);
+  }
+  if (added > 0 || l.ended) {
+    if (now - l.charted > 500 || l.ended) {
+      grown();
+      l.charted = now;
+    } else {
+      times = rec!.series().time;
+      scrub.max = String(rec!.frameCount - 1);
+    }
+    if (following && !playing) goTo(rec!.frameCount - 1);
+    else goTo(current);
+  }
+  setStatus(l.ended ? `live: the run finished (${rec!.frameCount} frames)` : `live: ${rec!.frameCount} frames${following ? '' : ' (go to the last frame to follow)'}`);
+}
+
 const params = new URLSearchParams(location.search);
-const fileParam = params.get('file');
-if (fileParam) void openUrl(fileParam, params.get('name') ?? undefined);
+const fileParam = params.get('file'), liveParam = params.get('live');
+if (liveParam) openLive(liveParam);
+else if (fileParam) void openUrl(fileParam, params.get('name') ?? undefined);
 
 // For the browser tests (Viewer~/scripts/e2e.mjs) and for poking at a recording from the console.
 declare global { interface Window { fulcrumViewer: unknown } }
@@ -190,6 +288,8 @@ window.fulcrumViewer = {
   get playing() { return playing; },
   get selection() { return selection.textContent; },
   get status() { return status.textContent; },
+  /** Live mode: connected, finished, and whether the view follows the newest frame. */
+  get live() { return live ? { ended: live.ended, following, bytes: live.length } : undefined; },
   bodyNames: () => rec?.header.bodies.map(b => b.name) ?? [],
   goTo,
   open: (bytes: ArrayBuffer, name: string) => open(bytes, name),

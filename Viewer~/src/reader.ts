@@ -135,7 +135,9 @@ export class Recording {
   readonly frameEnds: number[] = [];
   /** whether the file ended inside a frame (that frame is left out) */
   truncated = false;
-  private readonly view: DataView;
+  private view: DataView;
+  /** byte offset where the header ends and the first frame's length field starts */
+  private readonly headerEnd: number;
   private cache = new Map<number, Frame>();
 
   constructor(data: ArrayBuffer | Uint8Array) {
@@ -166,15 +168,36 @@ export class Recording {
       softBodies.push({ name, vertexCount, verticesPerElement, elements, surface });
     }
     this.header = { version, timestep, gravity, bodies, shapes, joints, softBodies };
-    while (c.pos < this.view.byteLength) {
+    this.headerEnd = c.pos;
+    this.scan(c.pos);
+  }
+
+  // Lists the whole frames from byte `pos` on.
+  private scan(pos: number): void {
+    this.truncated = false;
+    while (pos < this.view.byteLength) {
       // A last frame cut short (the writer was killed mid-frame) is left out, not an error.
-      const left = this.view.byteLength - c.pos;
-      if (left < 4 || left - 4 < this.view.getUint32(c.pos, true)) { this.truncated = true; break; }
-      const length = c.u32();
-      this.frameOffsets.push(c.pos);
-      this.frameEnds.push(c.pos + length);
-      c.pos += length;
+      const left = this.view.byteLength - pos;
+      if (left < 4 || left - 4 < this.view.getUint32(pos, true)) { this.truncated = true; break; }
+      const length = this.view.getUint32(pos, true);
+      this.frameOffsets.push(pos + 4);
+      this.frameEnds.push(pos + 4 + length);
+      pos += 4 + length;
     }
+  }
+
+  /**
+   * Live mode: the recording has grown to `data`, which starts with every byte read so far
+   * (the header and the frames already listed). Lists the frames that are now whole and
+   * returns how many there are new; a frame still arriving counts as `truncated` until it is whole.
+   */
+  extend(data: ArrayBuffer | Uint8Array): number {
+    const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
+    if (bytes.byteLength < this.view.byteLength) throw new RecordingError('a live recording cannot shrink');
+    this.view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    const before = this.frameCount;
+    this.scan(before > 0 ? this.frameEnds[before - 1] : this.headerEnd);
+    return this.frameCount - before;
   }
 
   get frameCount(): number { return this.frameOffsets.length; }

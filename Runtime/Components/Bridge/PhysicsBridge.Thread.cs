@@ -96,6 +96,7 @@ namespace Fulcrum.Components
                 TakeSharedInputs();
             }
             ApplyCommands(_applying);
+            TakeRecordStart();
             StepWorld(_stepper.FixedDt, 0, 1);
             WriteSnapshot();
             lock (_sync)
@@ -120,6 +121,7 @@ namespace Fulcrum.Components
             Array.Clear(_wEvents, 0, _wEventCount);
             _wEventCount = 0;
             _wPointCount = 0;
+            TakeRecordStop();
         }
 
         static void Swap<T>(ref T a, ref T b)

@@ -174,6 +174,7 @@ namespace Fulcrum.Components
                 if (k == n - 1) _wHasTarget[slot] = false; // consumed: without a new pose the body stops
             }
             _world.Step(dt);
+            RecordStep();
             ResolveEvents(dt);
             ReleaseSlots();
         }

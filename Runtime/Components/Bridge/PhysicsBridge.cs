@@ -321,6 +321,10 @@ namespace Fulcrum.Components
             if (_disposed) return;
             _disposed = true;
             StopThread();
+            // The thread is gone (or never was): an open recording is closed here.
+            _gRecording = false;
+            DropRecordRequest();
+            CloseRecorder();
         }
 
         bool _disposed;

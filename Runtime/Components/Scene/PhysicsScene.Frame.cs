@@ -126,6 +126,7 @@ namespace Fulcrum.Components
             BeforeStepConstraints();
             _world.Step(dt);
             AfterStep();
+            RecordStep();
             DispatchMessages();
             DispatchJointBreaks();
         }
