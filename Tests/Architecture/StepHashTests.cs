@@ -75,7 +75,7 @@ namespace Fulcrum.Tests.Architecture
                 w.Write(b.AngularVelocity[i]);
                 w.Write(b.Awake[i]);
             }
-            w.WritePool(world.Contacts.Source, world.Contacts.ManifoldCount);
+            for (int k = 0; k < world.Contacts.ManifoldCount; k++) w.Write(world.Contacts.Pool[world.Contacts.Source[k]]);
             JointStorage j = world.Joints;
             for (int k = 0; k < j.ActiveCount; k++)
             {
