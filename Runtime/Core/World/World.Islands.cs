@@ -1,4 +1,3 @@
-using System;
 using Fulcrum.Collision;
 using Fulcrum.Dynamics;
 
