@@ -91,9 +91,7 @@ namespace Fulcrum
             if (!awakeA && !awakeB) return true;
 
             int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
-            // Fat boxes only change when a proxy moves: check whether they parted only then.
-            if ((_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
-                !_broadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(_broadPhase.FatAabb(Shapes.ProxyId[shapeB])))
+            if (FatBoxesParted(shapeA, shapeB))
             {
                 if ((ct.Flags & ContactFlags.Touching) != 0) RecordStepEnd(c);
                 g.Destroy(c);
@@ -105,12 +103,9 @@ namespace Fulcrum
             ContactBuffer buffer = _contactBuffer;
             float speculative = 0;
             bool reduced = false;
-            // Tight bounds farther apart than any speculative distance the pair could have
-            // (each shape's own motion bound): no point can come out.
-            float reach = sensor ? 0 : SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
             bool reuse = !sensor && ManifoldReuseEnabled;
             Pose poseA = default, poseB = default;
-            if (Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB]))
+            if (InReach(shapeA, shapeB, sensor))
             {
                 if (!sensor) speculative = SpeculativeBase + MotionBound(shapeA, shapeB, dt);
                 if (reuse)
@@ -174,6 +169,20 @@ namespace Fulcrum
             return true;
         }
 
+        // The pair-liveness checks, the same for the serial pass and the parallel candidates.
+        // Fat boxes only change when a proxy moves: whether they parted is checked only then.
+        bool FatBoxesParted(int shapeA, int shapeB) =>
+            (_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
+            !_broadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(_broadPhase.FatAabb(Shapes.ProxyId[shapeB]));
+
+        // Tight bounds farther apart than any speculative distance the pair could have (each
+        // shape's own motion bound; none for a sensor) cannot give a point.
+        bool InReach(int shapeA, int shapeB, bool sensor)
+        {
+            float reach = sensor ? 0 : SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
+            return Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB]);
+        }
+
         // A sleeping dynamic body that a listed contact touches wakes (its pairs are then run by
         // the narrow phase's second pass).
         void WakeSleeper(int body, bool awake)
@@ -202,11 +211,7 @@ namespace Fulcrum
                 bool awakeA = Bodies.Awake[ct.BodyA], awakeB = Bodies.Awake[ct.BodyB];
                 if (!awakeA && !awakeB || (ct.Flags & ContactFlags.Sensor) != 0) continue;
                 int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
-                if ((_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
-                    !_broadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(_broadPhase.FatAabb(Shapes.ProxyId[shapeB])))
-                    continue;
-                float reach = SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
-                if (!Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB])) continue;
+                if (FatBoxesParted(shapeA, shapeB) || !InReach(shapeA, shapeB, false)) continue;
                 // The serial pass will most likely carry these manifolds over (it decides again).
                 if (reuse && CanReuseManifolds(ct, SpeculativeBase + MotionBound(shapeA, shapeB, dt), StepShapePose(shapeA), StepShapePose(shapeB)))
                     continue;
