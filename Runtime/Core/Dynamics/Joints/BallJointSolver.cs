@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.Dynamics
 {
@@ -20,11 +21,13 @@ namespace Fulcrum.Dynamics
     /// <summary>"ball": <see cref="PointConstraintPart"/> and joint friction; free rotation otherwise.</summary>
     internal struct BallJointSolver : IJointKind
     {
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Setup(ref JointData j, in SolverBody a, in SolverBody b, in JointGeometry g, bool mass)
         {
             if (mass) j.Parts.Ball.Point.ComputeMass(a, b, g.ArmA, g.ArmB);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void WarmStart(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g)
         {
             ref BallJointParts k = ref j.Parts.Ball;
@@ -32,6 +35,7 @@ namespace Fulcrum.Dynamics
             k.Point.WarmStart(ref a, ref b, g.ArmA, g.ArmB);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref BallJointParts k = ref j.Parts.Ball;
@@ -39,9 +43,11 @@ namespace Fulcrum.Dynamics
             k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta) =>
             j.Parts.Ball.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p) =>
             JointSolver.Report(ref j, p, j.Parts.Ball.Point.Impulse, j.Parts.Ball.FrictionImpulse, g.Gap.Length());
     }

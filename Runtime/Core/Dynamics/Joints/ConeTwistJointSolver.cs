@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.Dynamics
 {
@@ -32,6 +33,7 @@ namespace Fulcrum.Dynamics
         float _swing, _twist;
         bool _cone, _limits;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Setup(ref JointData j, in SolverBody a, in SolverBody b, in JointGeometry g, bool mass)
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
@@ -60,6 +62,7 @@ namespace Fulcrum.Dynamics
             k.UpperLimit.EffectiveMass = k.LowerLimit.EffectiveMass;
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void WarmStart(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g)
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
@@ -73,6 +76,7 @@ namespace Fulcrum.Dynamics
             k.Point.WarmStart(ref a, ref b, g.ArmA, g.ArmB);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
@@ -86,6 +90,7 @@ namespace Fulcrum.Dynamics
             k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
@@ -98,6 +103,7 @@ namespace Fulcrum.Dynamics
             k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p)
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;

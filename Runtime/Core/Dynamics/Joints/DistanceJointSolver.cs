@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.Dynamics
 {
@@ -28,6 +29,7 @@ namespace Fulcrum.Dynamics
         float _length;
         bool _rigid, _lower, _upper, _spring;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Setup(ref JointData j, in SolverBody a, in SolverBody b, in JointGeometry g, bool mass)
         {
             ref DistanceJointParts k = ref j.Parts.Distance;
@@ -49,6 +51,7 @@ namespace Fulcrum.Dynamics
             k.LowerLimit.EffectiveMass = k.UpperLimit.EffectiveMass = k.Spring.EffectiveMass = k.Length.EffectiveMass;
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void WarmStart(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g)
         {
             ref DistanceJointParts k = ref j.Parts.Distance;
@@ -58,6 +61,7 @@ namespace Fulcrum.Dynamics
             if (_upper) k.UpperLimit.WarmStart(ref a, ref b);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref DistanceJointParts k = ref j.Parts.Distance;
@@ -67,6 +71,7 @@ namespace Fulcrum.Dynamics
             if (_upper) k.UpperLimit.SolveLimit(ref a, ref b, j.MaxLength - _length, p.Joint, p.InvH, useBias);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
         {
             ref DistanceJointParts k = ref j.Parts.Distance;
@@ -75,6 +80,7 @@ namespace Fulcrum.Dynamics
             if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.MaxLength - _length, 0), beta);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p)
         {
             ref DistanceJointParts k = ref j.Parts.Distance;

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.Dynamics
 {
@@ -22,6 +23,7 @@ namespace Fulcrum.Dynamics
         /// <summary>The small-angle rotation error between the frames.</summary>
         Vector3 _angle;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Setup(ref JointData j, in SolverBody a, in SolverBody b, in JointGeometry g, bool mass)
         {
             _angle = RotationLockPart.Error(g.FrameA, g.FrameB);
@@ -31,6 +33,7 @@ namespace Fulcrum.Dynamics
             k.Lock.ComputeMass(a, b);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void WarmStart(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g)
         {
             ref FixedJointParts k = ref j.Parts.Fixed;
@@ -38,6 +41,7 @@ namespace Fulcrum.Dynamics
             k.Point.WarmStart(ref a, ref b, g.ArmA, g.ArmB);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref FixedJointParts k = ref j.Parts.Fixed;
@@ -45,6 +49,7 @@ namespace Fulcrum.Dynamics
             k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
         {
             ref FixedJointParts k = ref j.Parts.Fixed;
@@ -52,6 +57,7 @@ namespace Fulcrum.Dynamics
             k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p) =>
             JointSolver.Report(ref j, p, j.Parts.Fixed.Point.Impulse, j.Parts.Fixed.Lock.Impulse, g.Gap.Length());
     }

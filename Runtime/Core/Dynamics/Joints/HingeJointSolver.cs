@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.Dynamics
 {
@@ -42,6 +43,7 @@ namespace Fulcrum.Dynamics
         float _e1, _e2, _angle, _swingAngle;
         bool _lower, _upper, _motor, _spring, _swing;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Setup(ref JointData j, in SolverBody a, in SolverBody b, in JointGeometry g, bool mass)
         {
             ref HingeJointParts k = ref j.Parts.Hinge;
@@ -90,6 +92,7 @@ namespace Fulcrum.Dynamics
             k.LowerLimit.EffectiveMass = k.UpperLimit.EffectiveMass = k.Spring.EffectiveMass = k.Motor.EffectiveMass;
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void WarmStart(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g)
         {
             ref HingeJointParts k = ref j.Parts.Hinge;
@@ -103,6 +106,7 @@ namespace Fulcrum.Dynamics
             k.Point.WarmStart(ref a, ref b, g.ArmA, g.ArmB);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref HingeJointParts k = ref j.Parts.Hinge;
@@ -116,6 +120,7 @@ namespace Fulcrum.Dynamics
             k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
         {
             ref HingeJointParts k = ref j.Parts.Hinge;
@@ -126,6 +131,7 @@ namespace Fulcrum.Dynamics
             k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p)
         {
             ref HingeJointParts k = ref j.Parts.Hinge;

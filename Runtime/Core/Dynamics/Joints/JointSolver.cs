@@ -97,7 +97,8 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        // Generic over the kind (a struct), so each kind's passes compile to direct calls.
+        // Generic over the kind (a struct), so each kind's passes compile to direct calls, inlined
+        // here (the kinds ask for it) as the one switch over kinds and passes was before.
         static void Run<T>(ref JointData j, ref SolverBody a, ref SolverBody b, Pass pass, in StepParameters p, in JointGeometry g)
             where T : struct, IJointKind
         {

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace Fulcrum.Dynamics
 {
@@ -30,6 +31,7 @@ namespace Fulcrum.Dynamics
         float _c1, _c2, _x;
         bool _lower, _upper, _motor;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Setup(ref JointData j, in SolverBody a, in SolverBody b, in JointGeometry g, bool mass)
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
@@ -63,6 +65,7 @@ namespace Fulcrum.Dynamics
             k.Lock.ComputeMass(a, b);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void WarmStart(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g)
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
@@ -74,6 +77,7 @@ namespace Fulcrum.Dynamics
             k.Perp2.WarmStart(ref a, ref b);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
@@ -85,6 +89,7 @@ namespace Fulcrum.Dynamics
             k.Perp2.SolveEquality(ref a, ref b, _c2, p.Joint, useBias);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
@@ -95,6 +100,7 @@ namespace Fulcrum.Dynamics
             k.Perp2.SolvePosition(ref a, ref b, _c2, beta);
         }
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p)
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
