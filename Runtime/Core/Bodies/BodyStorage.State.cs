@@ -2,7 +2,7 @@ namespace Fulcrum
 {
     internal sealed partial class BodyStorage
     {
-        /// <summary>Writes every per-slot array up to <see cref="SlotCount"/> and the slot bookkeeping.</summary>
+        /// <summary>Writes every per-slot array up to <see cref="SlotStorage.SlotCount"/> and the slot bookkeeping.</summary>
         public void Save(StateWriter w)
         {
             w.Section("BODY");

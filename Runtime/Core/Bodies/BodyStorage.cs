@@ -7,10 +7,10 @@ namespace Fulcrum
     /// <summary>
     /// Body state in struct-of-arrays form, indexed by slot. Slots are reused through a free
     /// list; each reuse bumps the slot's generation so old handles go stale. Live slots are
-    /// also kept densely in <see cref="Active"/> so that stage loops walk only real bodies.
+    /// also kept densely in <see cref="SlotStorage.Active"/> so that stage loops walk only real bodies.
     /// Internal: the public view is <see cref="BodyRef"/>.
     /// </summary>
-    internal sealed partial class BodyStorage
+    internal sealed partial class BodyStorage : SlotStorage
     {
         // Hot: read or written by every stage loop.
         public Vector3[] Position = Array.Empty<Vector3>();          // body origin, world
@@ -52,19 +52,6 @@ namespace Fulcrum
         public int[] FirstShape = Array.Empty<int>();                // head of the body's shape list, -1 for none
         public string?[] Name = Array.Empty<string?>();
         public ulong[] UserData = Array.Empty<ulong>();
-
-        SlotAllocator _slots = new SlotAllocator();
-
-        /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
-        public int[] Generation => _slots.Generation;
-        /// <summary>Position of each slot in <see cref="Active"/>, -1 when free.</summary>
-        public int[] ActiveIndex => _slots.ActiveIndex;
-        /// <summary>Live slots, densely packed; order changes on removal (swap-remove).</summary>
-        public int[] Active => _slots.Active;
-        /// <summary>How many entries of <see cref="Active"/> are used.</summary>
-        public int ActiveCount => _slots.ActiveCount;
-        /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
-        public int SlotCount => _slots.SlotCount;
 
         /// <summary>True when the handle names a live body.</summary>
         public bool IsLive(BodyHandle h) => _slots.IsLive(h.Index, h.Generation);

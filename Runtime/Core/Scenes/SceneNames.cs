@@ -22,13 +22,13 @@ namespace Fulcrum.Scenes
         };
 
         /// <summary>"ball", "hinge", "distance", "fixed", "prismatic" or "coneTwist".</summary>
-        public static string Of(SceneJointType t) => t switch
+        public static string Of(JointKind t) => t switch
         {
-            SceneJointType.Ball => "ball",
-            SceneJointType.Hinge => "hinge",
-            SceneJointType.Distance => "distance",
-            SceneJointType.Fixed => "fixed",
-            SceneJointType.Prismatic => "prismatic",
+            JointKind.Ball => "ball",
+            JointKind.Hinge => "hinge",
+            JointKind.Distance => "distance",
+            JointKind.Fixed => "fixed",
+            JointKind.Prismatic => "prismatic",
             _ => "coneTwist",
         };
 
@@ -98,11 +98,11 @@ namespace Fulcrum.Scenes
         }
 
         /// <summary>Parses a joint type; false for an unknown spelling.</summary>
-        public static bool TryParse(string s, out SceneJointType t)
+        public static bool TryParse(string s, out JointKind t)
         {
-            for (t = SceneJointType.Ball; t <= SceneJointType.ConeTwist; t++)
+            for (t = JointKind.Ball; t <= JointKind.ConeTwist; t++)
                 if (Of(t) == s) return true;
-            t = SceneJointType.Ball;
+            t = JointKind.Ball;
             return false;
         }
 

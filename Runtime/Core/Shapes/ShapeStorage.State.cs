@@ -7,7 +7,7 @@ namespace Fulcrum
     {
         /// <summary>
         /// Writes the hulls and meshes once each (shapes share them), then every per-slot array
-        /// up to <see cref="SlotCount"/> and the slot bookkeeping.
+        /// up to <see cref="SlotStorage.SlotCount"/> and the slot bookkeeping.
         /// </summary>
         public void Save(StateWriter w)
         {

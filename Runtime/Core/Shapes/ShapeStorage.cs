@@ -8,7 +8,7 @@ namespace Fulcrum
     /// <see cref="BodyStorage"/>. A body's shapes form a singly linked list through
     /// <see cref="NextInBody"/>.
     /// </summary>
-    internal sealed partial class ShapeStorage
+    internal sealed partial class ShapeStorage : SlotStorage
     {
         public ShapeGeometry[] Geometry = Array.Empty<ShapeGeometry>();
         public Pose[] LocalPose = Array.Empty<Pose>();
@@ -25,19 +25,6 @@ namespace Fulcrum
         public ulong[] UserData = Array.Empty<ulong>();
         public Aabb[] WorldAabb = Array.Empty<Aabb>();         // tight bounds at the current pose
         public int[] ProxyId = Array.Empty<int>();             // broad-phase proxy, -1 when none
-        SlotAllocator _slots = new SlotAllocator();
-
-        /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
-        public int[] Generation => _slots.Generation;
-        /// <summary>Position of each slot in <see cref="Active"/>, -1 when free.</summary>
-        public int[] ActiveIndex => _slots.ActiveIndex;
-        /// <summary>Live slots, densely packed; order changes on removal (swap-remove).</summary>
-        public int[] Active => _slots.Active;
-        /// <summary>How many entries of <see cref="Active"/> are used.</summary>
-        public int ActiveCount => _slots.ActiveCount;
-        /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
-        public int SlotCount => _slots.SlotCount;
-
         /// <summary>True when the handle names a live shape.</summary>
         public bool IsLive(ShapeHandle h) => _slots.IsLive(h.Index, h.Generation);
 

@@ -29,7 +29,7 @@ namespace Fulcrum
             int manifolds = Math.Max(ContactGraph.Count, Math.Min(pairs, 4 * Math.Max(bodies, 1)));
             ContactGraph.Reserve(pairs, manifolds);
             Contacts.Reserve(manifolds);
-            BroadPhase.Reserve(Math.Max(bodies, Shapes.SlotCount));
+            _broadPhase.Reserve(Math.Max(bodies, Shapes.SlotCount));
             _contactOrder.Reserve(pairs);
             _eventOrder.Reserve(pairs);
             ReserveSorting(pairs);

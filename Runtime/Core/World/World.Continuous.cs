@@ -40,10 +40,19 @@ namespace Fulcrum
         /// pose against every other shape in reach; if it would have touched one on the way, it
         /// is put back where it first comes within <see cref="CollisionMargins.CcdTargetFactor"/>
         /// slop of it (velocity kept, so the next step's speculative contact meets it).
+        /// <see cref="StepStage.Continuous"/> then checks every body for divergence (the last
+        /// stage that moves bodies is over). Reads: start and end poses, the broad-phase trees,
+        /// shape geometry. Writes: the poses of swept bodies (and their world inertia); diverged
+        /// bodies are put back and reported (<see cref="Diverged"/>).
         /// </summary>
-        void SolveContinuous(float dt)
+        void Continuous(float dt)
         {
-            if (_ccdShapeCount == 0) return;
+            if (_ccdShapeCount != 0) SweepContinuousBodies();
+            CheckDivergence();
+        }
+
+        void SweepContinuousBodies()
+        {
             BodyStorage b = Bodies;
             for (int k = 0; k < b.ActiveCount; k++)
             {
@@ -102,8 +111,8 @@ namespace Fulcrum
                 Aabb a1 = Shapes.Geometry[s].ComputeAabb(end * Shapes.LocalPose[s]);
                 Aabb swept = Aabb.Union(a0, a1).Expanded(angular + finder.TargetGap);
                 finder.Swept = swept;
-                BroadPhase.StaticTree.Query(swept, ref finder);
-                BroadPhase.MovingTree.Query(swept, ref finder);
+                _broadPhase.StaticTree.Query(swept, ref finder);
+                _broadPhase.MovingTree.Query(swept, ref finder);
             }
             if (finder.Toi >= 1) return;
 

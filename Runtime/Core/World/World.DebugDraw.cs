@@ -29,8 +29,8 @@ namespace Fulcrum
                 }
             if ((flags & DebugDrawFlags.TreeNodes) != 0)
             {
-                DrawTree(buffer, BroadPhase.StaticTree);
-                DrawTree(buffer, BroadPhase.MovingTree);
+                DrawTree(buffer, _broadPhase.StaticTree);
+                DrawTree(buffer, _broadPhase.MovingTree);
             }
             if ((flags & DebugDrawFlags.Contacts) != 0) DrawContacts(buffer);
         }

@@ -28,56 +28,6 @@ namespace Fulcrum
         /// </summary>
         public ReadOnlySpan<ContactEvent> ContactEvents => new ReadOnlySpan<ContactEvent>(_events, 0, _eventCount);
 
-        // Copies the solver's impulses back to the persistent contacts, then turns each awake
-        // contact's touching state (and each sensor's overlap) into begin/persist/end events.
-        void PublishEvents()
-        {
-            _queryBoundsStale = true;
-            _eventCount = 0;
-            for (int i = 0; i < _removalEventCount; i++) AppendEvent(_removalEvents[i]);
-            _removalEventCount = 0;
-
-            ContactGraph g = ContactGraph;
-            float slop = _settings.LinearSlop;
-            for (int k = 0; k < g.DenseCount; k++)
-            {
-                int c = g.Dense[k];
-                ref Contact ct = ref g.Contacts[c];
-                if ((ct.Flags & ContactFlags.Updated) == 0) continue;
-                bool was = (ct.Flags & ContactFlags.Touching) != 0;
-                bool now = (ct.Flags & ContactFlags.Sensor) != 0
-                    ? (ct.Flags & ContactFlags.Overlapping) != 0
-                    : IsTouching(ref ct, slop);
-                if (now) ct.Flags |= ContactFlags.Touching;
-                else ct.Flags &= ~ContactFlags.Touching;
-                if (now) AddStepEvent(c, was ? ContactEventKind.Persist : ContactEventKind.Begin);
-                else if (was) AddStepEvent(c, ContactEventKind.End);
-            }
-
-            int n = _stepEventCount;
-            for (int i = 0; i < n; i++) _stepEventOrder[i] = i;
-            _eventOrder.Sort(_stepEventKeys, _stepEventOrder, n);
-            for (int i = 0; i < n; i++) AppendEvent(_stepEvents[_stepEventOrder[i]]);
-            _stepEventCount = 0;
-        }
-
-        // Touching: a point within the linear slop, or one the solver pushed on (a
-        // speculative point that stopped a fast body counts as a hit).
-        bool IsTouching(ref Contact ct, float slop)
-        {
-            ContactGraph g = ContactGraph;
-            for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
-            {
-                ref ContactManifold mf = ref g.Manifolds[m];
-                for (int i = 0; i < mf.PointCount; i++)
-                {
-                    ref ContactPoint p = ref ContactManifold.Point(ref mf, i);
-                    if (p.Separation <= slop || p.NormalImpulse > 0) return true;
-                }
-            }
-            return false;
-        }
-
         // A contact that stopped existing inside the step (its fat boxes parted).
         void RecordStepEnd(int c) => AddStepEvent(c, ContactEventKind.End);
 

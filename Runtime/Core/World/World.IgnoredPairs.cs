@@ -37,7 +37,7 @@ namespace Fulcrum
                 IgnoredPairs.Remove(key);
                 IgnoredPairList.Remove(key);
                 // The pair filter runs on new fat-box overlaps only: queue the proxy for a new search.
-                if (Shapes.ProxyId[sa] >= 0) BroadPhase.Requeue(Shapes.ProxyId[sa]);
+                if (Shapes.ProxyId[sa] >= 0) _broadPhase.Requeue(Shapes.ProxyId[sa]);
             }
             Wake(Shapes.Body[sa]);
             Wake(Shapes.Body[sb]);

@@ -321,28 +321,5 @@ namespace Fulcrum
             }
             return false;
         }
-
-        // After the solve: joints whose force or torque went over the threshold break, once.
-        void CollectBrokenJoints()
-        {
-            for (int k = 0; k < _islands.JointCount; k++)
-            {
-                int slot = _islands.Joints[k];
-                ref JointData j = ref Joints.Data[slot];
-                if (j.Broken || !(j.Stress > 1f)) continue;
-                j.Broken = true;
-                if (_jointBreakCount == _jointBreaks.Length) Array.Resize(ref _jointBreaks, _jointBreaks.Length * 2);
-                _jointBreaks[_jointBreakCount++] = new JointBreakEvent
-                {
-                    Joint = new JointHandle(slot, Joints.Generation[slot], Id),
-                    BodyA = j.BodyA < 0 ? BodyHandle.None : new BodyHandle(j.BodyA, Bodies.Generation[j.BodyA], Id),
-                    BodyB = j.BodyB < 0 ? BodyHandle.None : new BodyHandle(j.BodyB, Bodies.Generation[j.BodyB], Id),
-                    Force = j.Force,
-                    Torque = j.Torque,
-                    Stress = j.Stress,
-                    UserData = j.UserData,
-                };
-            }
-        }
     }
 }

@@ -105,8 +105,8 @@ namespace Fulcrum
             RefreshQueryBounds();
             Aabb box = shape.ComputeAabb(pose);
             var q = new OverlapQuery { World = this, Filter = filter, Shape = shape, Pose = pose, Buffer = _queryBuffer, Found = _overlaps };
-            BroadPhase.StaticTree.Query(box, ref q);
-            BroadPhase.MovingTree.Query(box, ref q);
+            _broadPhase.StaticTree.Query(box, ref q);
+            _broadPhase.MovingTree.Query(box, ref q);
             _overlaps = q.Found;
             Array.Sort(_overlaps, 0, q.Count);
             int n = Math.Min(q.Count, results.Length);
@@ -122,9 +122,9 @@ namespace Fulcrum
         {
             RefreshQueryBounds();
             Vector3 segment = q.Direction * q.Length;
-            BroadPhase.StaticTree.RayCast(q.Origin, segment, 1f, ref q);
+            _broadPhase.StaticTree.RayCast(q.Origin, segment, 1f, ref q);
             float remaining = q.HasHit ? q.Best.Distance / q.Length : 1f;
-            BroadPhase.MovingTree.RayCast(q.Origin, segment, remaining, ref q);
+            _broadPhase.MovingTree.RayCast(q.Origin, segment, remaining, ref q);
         }
 
         ShapeCastQuery PrepareCast(in ShapeGeometry shape, in Pose pose, Vector3 direction, float maxDistance, in QueryFilter filter)
@@ -141,8 +141,8 @@ namespace Fulcrum
         void CastShape(ref ShapeCastQuery q)
         {
             RefreshQueryBounds();
-            BroadPhase.StaticTree.Query(q.SweptBounds, ref q);
-            BroadPhase.MovingTree.Query(q.SweptBounds, ref q);
+            _broadPhase.StaticTree.Query(q.SweptBounds, ref q);
+            _broadPhase.MovingTree.Query(q.SweptBounds, ref q);
         }
 
         static Vector3 CheckRay(Vector3 origin, Vector3 direction, ref float maxDistance)
@@ -196,9 +196,9 @@ namespace Fulcrum
                 if (Bodies.Type[body] == BodyType.Static) continue;
                 Aabb tight = s.Geometry[i].ComputeAabb(ShapeWorldPose(i));
                 s.WorldAabb[i] = tight;
-                if (!BroadPhase.FatAabb(s.ProxyId[i]).Contains(tight))
+                if (!_broadPhase.FatAabb(s.ProxyId[i]).Contains(tight))
                 {
-                    BroadPhase.MoveProxy(s.ProxyId[i], tight.Expanded(CollisionMargins.AabbMargin));
+                    _broadPhase.MoveProxy(s.ProxyId[i], tight.Expanded(CollisionMargins.AabbMargin));
                     _fatBoxStep[i] = _stepIndex;
                 }
             }

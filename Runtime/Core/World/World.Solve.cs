@@ -6,7 +6,6 @@ namespace Fulcrum
 {
     public sealed partial class World
     {
-        IslandBuilder _islands = new IslandBuilder();
         readonly SolverContext _solverContext = new SolverContext();
         readonly PgsSolver _pgs = new PgsSolver();
         readonly TgsSolver _tgs = new TgsSolver();
@@ -34,16 +33,17 @@ namespace Fulcrum
         /// <summary>The manifold pool that this step's contact set and the islands index into.</summary>
         ContactManifold[] StepManifolds() => Contacts.Pool;
 
-        // Islands stage: wake what awake bodies touch, list the step's constraints, union-find.
-        void BuildIslands()
-        {
-            _jointBreakCount = 0;
-            Joints.EnsureBodies(Bodies.SlotCount);
-            _islands.Build(Bodies, Shapes, Contacts.Pool, Contacts.Source, Contacts.ManifoldCount, Joints);
-        }
-
-        // Bodies in no constraint take the plain integrator step; the others go to the solver
-        // the settings name (PGS or TGS).
+        /// <summary>
+        /// <see cref="StepStage.Solve"/>: bodies in no constraint take the plain integrator step;
+        /// the others go to the solver the settings name (PGS or TGS), which integrates
+        /// velocities, solves contacts and joints and integrates positions.
+        /// Reads: the islands' awake bodies, manifolds and joints; body velocities, forces and
+        /// poses; the settings. Writes: body poses and velocities, the manifolds' accumulated
+        /// impulses, the joints' impulses and reports (force, torque, stress, error), the
+        /// solved-in-step stamps (only with a soft-body stage) and <see cref="StatMaxJointError"/>.
+        /// Joints over their breaking threshold are only marked by their stress here; they break
+        /// in <see cref="SleepAndEvents"/>.
+        /// </summary>
         void Solve(float dt)
         {
             IConstraintSolver solver = _settings.Solver == SolverType.Pgs ? _pgs : (IConstraintSolver)_tgs;
@@ -74,7 +74,6 @@ namespace Fulcrum
                 for (int k = 1; k < _solverContext.BodyCount; k++) _solvedInStep[_solverContext.BodySlot[k]] = _stepIndex + 1;
             }
             StatMaxJointError = MathF.Max(StatMaxJointError, solver.Step(_solverContext, _islands, dt));
-            CollectBrokenJoints();
         }
 
         bool _stepConstrained;
@@ -90,34 +89,5 @@ namespace Fulcrum
         /// </summary>
         internal int IntegratorSubsteps(int slot) =>
             _stepConstrained && _settings.Solver == SolverType.Tgs && slot < _solvedInStep.Length && _solvedInStep[slot] == _stepIndex + 1 ? _settings.Substeps : 1;
-
-        // Sleep half of the last stage: rest timers, then resting islands fall asleep.
-        void UpdateSleep(float dt)
-        {
-            ContactManifold[] manifolds = StepManifolds();
-            _islands.UpdateSleep(Bodies, manifolds, Joints, _settings, dt);
-        }
-
-        /// <summary>Wakes the sleeping island of body <paramref name="slot"/>, if it sleeps in one.</summary>
-        void WakeIsland(int slot) => _islands.WakeIsland(Bodies, slot);
-
-        // A removed body may have held others up: wake everything that touches it (sleeping
-        // neighbours included, through the persistent contacts), and take its joints with it.
-        // Runs before its shapes, and so its contacts, are released.
-        void OnBodyDestroyed(int slot)
-        {
-            WakeIsland(slot);
-            ContactGraph g = ContactGraph;
-            for (int s = Bodies.FirstShape[slot]; s >= 0; s = Shapes.NextInBody[s])
-            {
-                for (int e = g.FirstEdge(s); e >= 0; e = g.NextEdge(e))
-                {
-                    ref Contact c = ref g.Contacts[e >> 1];
-                    if ((c.Flags & ContactFlags.Touching) == 0) continue;
-                    Wake(c.BodyA == slot ? c.BodyB : c.BodyA);
-                }
-            }
-            DestroyJointsOf(slot);
-        }
     }
 }

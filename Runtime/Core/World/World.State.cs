@@ -39,7 +39,7 @@ namespace Fulcrum
             Bodies.Save(w);
             Shapes.Save(w);
             Joints.Save(w);
-            BroadPhase.Save(w);
+            _broadPhase.Save(w);
             ContactGraph.Save(w);
 
             w.Section("IGNR");
@@ -94,7 +94,7 @@ namespace Fulcrum
             BodyStorage bodies = BodyStorage.Load(r);
             ShapeStorage shapes = ShapeStorage.Load(r);
             JointStorage joints = JointStorage.Load(r, bodies.SlotCount);
-            BroadPhase broadPhase = BroadPhase.Load(r);
+            BroadPhase broadPhase = Collision.BroadPhase.Load(r);
             ContactGraph graph = ContactGraph.Load(r);
             CheckLinks(r, bodies, shapes, graph);
 
@@ -151,7 +151,7 @@ namespace Fulcrum
             Bodies = bodies;
             Shapes = shapes;
             Joints = joints;
-            BroadPhase = broadPhase;
+            _broadPhase = broadPhase;
             ContactGraph = graph;
             IgnoredPairs = ignored;
             IgnoredPairList = new System.Collections.Generic.List<ulong>(ignoredList);

@@ -10,7 +10,10 @@ namespace Fulcrum
         /// <summary>
         /// Advances the world by <paramref name="dt"/> seconds (a fixed step: keep the
         /// accumulator in the caller, or use <see cref="FixedStepper"/>). Runs the stages of
-        /// <see cref="StepStage"/> in order; a stage with no work returns at once.
+        /// <see cref="StepStage"/> in order, each a method of the same name in its own file
+        /// (World.BroadPhase.cs ... World.SleepAndEvents.cs), between the per-step reset
+        /// (<c>BeginStep</c>) and the end of step (<c>EndStep</c>); a stage with no work returns
+        /// at once. Documentation~/Architecture.md walks through them.
         /// Allocates nothing once the world is warm. <paramref name="dt"/> must be in
         /// [<see cref="Limits.MinTimeStep"/>, <see cref="Limits.MaxTimeStep"/>] (1e-6 to 1 s).
         /// </summary>
@@ -25,24 +28,21 @@ namespace Fulcrum
                 _profile = default;
                 long start = Stopwatch.GetTimestamp();
                 long t = start;
-                ResetStatistics();
                 BeginStep(dt);
 
-                UpdateBroadPhase(dt);
+                BroadPhase(dt);
                 t = Mark(StepStage.BroadPhase, t);
-                UpdateContacts(dt);
+                NarrowPhase(dt);
                 t = Mark(StepStage.NarrowPhase, t);
-                BuildIslands();
+                Islands();
                 t = Mark(StepStage.Islands, t);
                 Solve(dt);
                 t = Mark(StepStage.Solve, t);
-                if (SoftBodyStage != null && SoftBodyStage.HasWork) SoftBodyStage.Step(this, dt);
+                SoftBodies(dt);
                 t = Mark(StepStage.SoftBodies, t);
-                SolveContinuous(dt);
-                CheckDivergence();
+                Continuous(dt);
                 t = Mark(StepStage.Continuous, t);
-                UpdateSleep(dt);
-                PublishEvents();
+                SleepAndEvents(dt);
                 Mark(StepStage.SleepAndEvents, t);
 
                 EndStep();
@@ -63,11 +63,13 @@ namespace Fulcrum
             return now;
         }
 
-        // Remembers the starting pose for render interpolation (and the starting velocities for
-        // the soft-body stage) and turns kinematic targets into the velocities that reach them
-        // in this step.
+        // The one per-step reset: clears last step's statistics and joint breaks, remembers the
+        // starting pose for render interpolation (and the starting velocities for the soft-body
+        // stage) and turns kinematic targets into the velocities that reach them in this step.
         void BeginStep(float dt)
         {
+            ResetStatistics();
+            _jointBreakCount = 0;
             BodyStorage b = Bodies;
             bool soft = SoftBodyStage != null && SoftBodyStage.HasWork;
             for (int k = 0; k < b.ActiveCount; k++)

@@ -37,7 +37,7 @@ namespace Fulcrum.Dynamics
         public int[] Joints = Array.Empty<int>();
         public int JointCount;
 
-        /// <summary>Awake non-static bodies, in slot order of <see cref="BodyStorage.Active"/>.</summary>
+        /// <summary>Awake non-static bodies, in slot order of <see cref="SlotStorage.Active"/>.</summary>
         public int[] AwakeBodies = Array.Empty<int>();
         public int AwakeCount;
 

@@ -3,10 +3,11 @@ using System.Numerics;
 namespace Fulcrum.Dynamics
 {
     /// <summary>
-    /// One joint: its definition in solver units (radians, metres, newtons), the constraint
-    /// parts with their accumulated impulses (kept from step to step for warm starting), the
-    /// per-step geometry and what it reports. Which parts a kind uses is listed in
-    /// <see cref="JointSolver"/>. Blittable: names live beside it in <see cref="JointStorage"/>.
+    /// One joint: a common header (kind, bodies, anchors, frames, the definition in solver
+    /// units: radians, metres, newtons; the per-step geometry; what it reports) and its kind's
+    /// constraint parts, overlaid on the other kinds' (<see cref="Parts"/>; each kind's solver,
+    /// <c>&lt;Kind&gt;JointSolver</c>, says what its parts are). Blittable: names live beside it
+    /// in <see cref="JointStorage"/>.
     /// </summary>
     internal struct JointData
     {
@@ -50,22 +51,11 @@ namespace Fulcrum.Dynamics
         /// <summary>The (sub)step the impulses belong to, s.</summary>
         public float StepDt;
 
-        // Parts.
-        public PointConstraintPart Point;
-        public RotationLockPart Lock;
-        public HingeRotationPart HingeRotation;
-        /// <summary>Prismatic: the rows across the slide axis.</summary>
-        public AxisConstraintPart Perp1, Perp2;
-        /// <summary>Distance: the rigid length row.</summary>
-        public AxisConstraintPart Length;
-        /// <summary>Limits (hinge angle, prismatic slide, distance, cone-twist twist).</summary>
-        public AxisConstraintPart LowerLimit, UpperLimit;
-        /// <summary>Cone-twist: the swing cone.</summary>
-        public AxisConstraintPart Cone;
-        public AxisConstraintPart Motor;
-        public AxisConstraintPart Spring;
-        /// <summary>Joint friction's accumulated angular impulse on B (world, N m s per (sub)step).</summary>
-        public Vector3 FrictionImpulse;
+        /// <summary>
+        /// The kind's constraint parts with their accumulated impulses (kept from step to step
+        /// for warm starting): one block per kind, overlaid (<see cref="JointParts"/>).
+        /// </summary>
+        public JointParts Parts;
 
         // Reports.
         /// <summary>Constraint force and torque on B in the last step, world, N and N m.</summary>

@@ -1,6 +1,6 @@
 namespace Fulcrum
 {
-    /// <summary>The kinds of joint; the names match the scene file's joint types.</summary>
+    /// <summary>The kinds of joint, in the world and in the scene model (<c>SceneJoint.Type</c>); the scene file names them in lower camel case (<c>ball</c>, <c>hinge</c>, <c>distance</c>, <c>fixed</c>, <c>prismatic</c>, <c>coneTwist</c>).</summary>
     public enum JointKind : byte
     {
         /// <summary>"ball": the anchors coincide; free rotation.</summary>

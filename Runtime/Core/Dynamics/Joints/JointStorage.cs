@@ -7,7 +7,7 @@ namespace Fulcrum.Dynamics
     /// slots, and for every body the list of its joints (two edges per joint, edge = 2 slot +
     /// side) so that removing a body finds its joints without a search.
     /// </summary>
-    internal sealed partial class JointStorage
+    internal sealed partial class JointStorage : SlotStorage
     {
         public JointData[] Data = Array.Empty<JointData>();
         public string?[] Name = Array.Empty<string?>();
@@ -15,19 +15,6 @@ namespace Fulcrum.Dynamics
         public int[] NextEdge = Array.Empty<int>();
         /// <summary>First edge of each body slot's list, -1 for none.</summary>
         public int[] FirstEdge = Array.Empty<int>();
-
-        SlotAllocator _slots = new SlotAllocator();
-
-        /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
-        public int[] Generation => _slots.Generation;
-        /// <summary>Position of each slot in <see cref="Active"/>, -1 when free.</summary>
-        public int[] ActiveIndex => _slots.ActiveIndex;
-        /// <summary>Live slots, densely packed; order changes on removal (swap-remove).</summary>
-        public int[] Active => _slots.Active;
-        /// <summary>How many entries of <see cref="Active"/> are used.</summary>
-        public int ActiveCount => _slots.ActiveCount;
-        /// <summary>One past the highest slot ever used: the bound for slot-indexed loops.</summary>
-        public int SlotCount => _slots.SlotCount;
 
         public bool IsLive(JointHandle h) => _slots.IsLive(h.Index, h.Generation);
 

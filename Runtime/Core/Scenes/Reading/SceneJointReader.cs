@@ -11,7 +11,7 @@ namespace Fulcrum.Scenes
             if (r == null) return null;
             string? type = r.String("type", required: true);
             if (type == null) return null;
-            if (!SceneNames.TryParse(type, out SceneJointType kind))
+            if (!SceneNames.TryParse(type, out JointKind kind))
             {
                 d.Add(JsonPath.Member(v.Path, "type"), $"unknown joint type '{type}' (expected ball, hinge, distance, fixed, prismatic or coneTwist)", v["type"]);
                 return null;
@@ -19,13 +19,13 @@ namespace Fulcrum.Scenes
             SceneJoint joint;
             switch (kind)
             {
-                case SceneJointType.Ball:
+                case JointKind.Ball:
                     joint = new SceneBallJoint();
                     break;
-                case SceneJointType.Fixed:
+                case JointKind.Fixed:
                     joint = new SceneFixedJoint();
                     break;
-                case SceneJointType.Hinge:
+                case JointKind.Hinge:
                     joint = new SceneHingeJoint
                     {
                         AxisA = r.Vector("axisA", Vector3.Zero, required: true),
@@ -36,7 +36,7 @@ namespace Fulcrum.Scenes
                         MaxMotorTorque = r.Float("maxMotorTorque", 0),
                     };
                     break;
-                case SceneJointType.Distance:
+                case JointKind.Distance:
                     joint = new SceneDistanceJoint
                     {
                         MinLength = r.OptionalFloat("minLength"),
@@ -45,7 +45,7 @@ namespace Fulcrum.Scenes
                         Damping = r.Float("damping", 0),
                     };
                     break;
-                case SceneJointType.Prismatic:
+                case JointKind.Prismatic:
                     joint = new ScenePrismaticJoint
                     {
                         AxisA = r.Vector("axisA", Vector3.Zero, required: true),

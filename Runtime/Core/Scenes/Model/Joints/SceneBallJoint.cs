@@ -4,6 +4,6 @@ namespace Fulcrum.Scenes
     public sealed class SceneBallJoint : SceneJoint
     {
         /// <inheritdoc/>
-        public override SceneJointType Type => SceneJointType.Ball;
+        public override JointKind Type => JointKind.Ball;
     }
 }

@@ -10,7 +10,7 @@ namespace Fulcrum.Scenes
     public sealed class SceneConeTwistJoint : SceneJoint
     {
         /// <inheritdoc/>
-        public override SceneJointType Type => SceneJointType.ConeTwist;
+        public override JointKind Type => JointKind.ConeTwist;
 
         /// <summary><c>axisA</c>: the cone axis in A's frame, non-zero. Required.</summary>
         public Vector3 AxisA { get; set; }

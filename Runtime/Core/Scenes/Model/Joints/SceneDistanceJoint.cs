@@ -8,7 +8,7 @@ namespace Fulcrum.Scenes
     public sealed class SceneDistanceJoint : SceneJoint
     {
         /// <inheritdoc/>
-        public override SceneJointType Type => SceneJointType.Distance;
+        public override JointKind Type => JointKind.Distance;
 
         /// <summary><c>minLength</c>, m, &gt;= 0; null: the initial distance.</summary>
         public float? MinLength { get; set; }

@@ -4,6 +4,6 @@ namespace Fulcrum.Scenes
     public sealed class SceneFixedJoint : SceneJoint
     {
         /// <inheritdoc/>
-        public override SceneJointType Type => SceneJointType.Fixed;
+        public override JointKind Type => JointKind.Fixed;
     }
 }

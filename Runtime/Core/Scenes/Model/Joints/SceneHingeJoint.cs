@@ -9,7 +9,7 @@ namespace Fulcrum.Scenes
     public sealed class SceneHingeJoint : SceneJoint
     {
         /// <inheritdoc/>
-        public override SceneJointType Type => SceneJointType.Hinge;
+        public override JointKind Type => JointKind.Hinge;
 
         /// <summary><c>axisA</c>: the hinge axis in A's frame, non-zero. Required.</summary>
         public Vector3 AxisA { get; set; }

@@ -4,13 +4,13 @@ namespace Fulcrum.Scenes
 {
     /// <summary>
     /// An entry of <c>joints</c>: the fields every joint has. One subclass per
-    /// <see cref="SceneJointType"/> adds that kind's fields. Joints are kept as data until the
+    /// <see cref="JointKind"/> adds that kind's fields. Joints are kept as data until the
     /// world has joints (see <see cref="SceneInstance.Joints"/>).
     /// </summary>
     public abstract class SceneJoint
     {
         /// <summary>The kind, written as the <c>type</c> field.</summary>
-        public abstract SceneJointType Type { get; }
+        public abstract JointKind Type { get; }
 
         /// <summary><c>name</c>: optional; unique among joints when given.</summary>
         public string? Name { get; set; }

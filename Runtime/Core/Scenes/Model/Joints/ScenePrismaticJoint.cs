@@ -9,7 +9,7 @@ namespace Fulcrum.Scenes
     public sealed class ScenePrismaticJoint : SceneJoint
     {
         /// <inheritdoc/>
-        public override SceneJointType Type => SceneJointType.Prismatic;
+        public override JointKind Type => JointKind.Prismatic;
 
         /// <summary><c>axisA</c>: the slide axis in A's frame, non-zero. Required.</summary>
         public Vector3 AxisA { get; set; }

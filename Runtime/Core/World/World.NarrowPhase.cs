@@ -7,8 +7,7 @@ namespace Fulcrum
 {
     public sealed partial class World
     {
-        // Collision state. The margin policy is written down in CollisionMargins.
-        internal BroadPhase BroadPhase = new BroadPhase();
+        // Narrow-phase state: the persistent contacts and manifolds, and this step's list for the solver.
         internal ContactGraph ContactGraph = new ContactGraph();
         /// <summary>This step's manifolds for the solver (see <see cref="ContactSet"/>).</summary>
         internal readonly ContactSet Contacts = new ContactSet();
@@ -23,17 +22,6 @@ namespace Fulcrum
         int _stepTouching;
         float _stepMaxPenetration;
         bool _anyWoken;
-        // Per shape slot: how far the shape can move in this step (refreshed for awake moving
-        // shapes by the broad phase; 0 for static ones), and the step its fat box last changed.
-        float[] _shapeMotion = Array.Empty<float>();
-        // Per shape slot: the farthest its geometry reaches from its own origin (manifold reuse
-        // bounds how far a rotation can move a shape's points with it).
-        float[] _shapeRadius = Array.Empty<float>();
-        // Per shape slot: its world pose as the broad phase computed it this step (stamped with
-        // the step index), so the narrow phase does not rebuild it for every pair.
-        Pose[] _shapePose = Array.Empty<Pose>();
-        long[] _shapePoseStep = Array.Empty<long>();
-        long[] _fatBoxStep = Array.Empty<long>();
         // Parallel narrow phase (Settings.Threads > 1): the candidates' pair functions run on
         // the worker pool first; per contact slot, the candidate index + 1 (0: none).
         NarrowPhaseJob? _narrowJob;
@@ -44,129 +32,22 @@ namespace Fulcrum
         /// <summary>Steps whose narrow phase ran its pair functions on the worker pool (for tests).</summary>
         internal long ParallelNarrowPhaseSteps;
 
-        float SpeculativeBase => CollisionMargins.SpeculativeDistance(_settings.LinearSlop);
-
-        void OnShapeAdded(int shape)
-        {
-            ContactGraph.EnsureShapeCapacity(Shapes.SlotCount);
-            if (_shapeMotion.Length < Shapes.SlotCount)
-            {
-                int n = Math.Max(Shapes.SlotCount, 2 * _shapeMotion.Length);
-                Array.Resize(ref _shapeMotion, n);
-                Array.Resize(ref _shapeRadius, n);
-                Array.Resize(ref _shapePose, n);
-                Array.Resize(ref _shapePoseStep, n);
-                Array.Resize(ref _fatBoxStep, n);
-            }
-            _shapeMotion[shape] = 0;
-            _shapePoseStep[shape] = -1;
-            Aabb local = Shapes.Geometry[shape].ComputeAabb(Pose.Identity);
-            _shapeRadius[shape] = local.Center.Length() + local.Extents.Length();
-            _fatBoxStep[shape] = _stepIndex;
-            int b = Shapes.Body[shape];
-            bool isStatic = Bodies.Type[b] == BodyType.Static;
-            Aabb fat = Shapes.WorldAabb[shape].Expanded(CollisionMargins.AabbMargin + SpeculativeBase);
-            Shapes.ProxyId[shape] = BroadPhase.CreateProxy(fat, shape, isStatic);
-            OnCcdShapeAdded(b);
-        }
-
-        void OnShapeRemoved(int shape)
-        {
-            int edge = ContactGraph.FirstEdge(shape);
-            while (edge >= 0)
-            {
-                int next = ContactGraph.NextEdge(edge);
-                int c = edge >> 1;
-                if ((ContactGraph.Contacts[c].Flags & ContactFlags.Touching) != 0)
-                    RecordRemovalEnd(c);
-                ContactGraph.Destroy(c);
-                edge = next;
-            }
-            BroadPhase.DestroyProxy(Shapes.ProxyId[shape]);
-            Shapes.ProxyId[shape] = -1;
-            OnCcdShapeRemoved(Shapes.Body[shape]);
-            ForgetIgnoredPairs(shape);
-        }
-
-        // The shape's world pose: this step's broad-phase copy for awake moving shapes, computed
-        // afresh for the others (static, sleeping).
-        Pose StepShapePose(int shape) => _shapePoseStep[shape] == _stepIndex ? _shapePose[shape] : ShapeWorldPose(shape);
-
-        // Refreshes the bounds of awake moving shapes, swept over their predicted motion in
-        // this step, moves the proxies whose swept bounds left their fat boxes (or whose fat
-        // boxes became far too loose), then finds the new pairs.
-        void UpdateBroadPhase(float dt)
-        {
-            ShapeStorage s = Shapes;
-            BodyStorage b = Bodies;
-            float grow = SpeculativeBase;
-            for (int k = 0; k < s.ActiveCount; k++)
-            {
-                int i = s.Active[k];
-                int body = s.Body[i];
-                if (b.Type[body] == BodyType.Static || !b.Awake[body]) continue;
-                Pose pose = ShapeWorldPose(i);
-                _shapePose[i] = pose;
-                _shapePoseStep[i] = _stepIndex;
-                Aabb tight = s.Geometry[i].ComputeAabb(pose);
-                s.WorldAabb[i] = tight;
-                float angular = b.AngularVelocity[body].Length() * dt * Reach(tight, b.Center[body]);
-                Aabb swept = tight.Expanded(grow + angular);
-                Vector3 move = b.LinearVelocity[body] * dt;
-                _shapeMotion[i] = move.Length() + angular;
-                swept = new Aabb(swept.Min + Vector3.Min(move, Vector3.Zero), swept.Max + Vector3.Max(move, Vector3.Zero));
-                if (RefitProxy(s.ProxyId[i], swept)) _fatBoxStep[i] = _stepIndex;
-            }
-            BroadPhase.UpdatePairs(this);
-        }
-
-        // True when the proxy got a new fat box.
-        bool RefitProxy(int proxy, in Aabb swept)
-        {
-            ref readonly Aabb fat = ref BroadPhase.FatAabb(proxy);
-            Aabb wanted = swept.Expanded(CollisionMargins.AabbMargin);
-            // A fat box four times the area it needs came from a fast phase that ended.
-            if (fat.Contains(swept) && fat.SurfaceArea <= 4f * wanted.SurfaceArea) return false;
-            BroadPhase.MoveProxy(proxy, wanted);
-            return true;
-        }
-
-        // The farthest a shape's bounds reach from its body's centre of mass.
-        static float Reach(in Aabb box, Vector3 center) => Vector3.Distance(box.Center, center) + box.Extents.Length();
-
         /// <summary>
-        /// The pair filter: called by the broad phase for each new overlap of fat boxes.
-        /// Creates a contact when the shapes are on different bodies, at least one of which is
-        /// dynamic (or, for a sensor, not static), their layers accept each other, a pair
-        /// function exists and the pair is not known yet.
+        /// <see cref="StepStage.NarrowPhase"/>: runs the pair functions of every contact with an
+        /// awake body (on the worker pool first when there are enough), carries impulses over by
+        /// feature id or reuses last step's manifolds, and lists the manifolds for the solver in
+        /// shape-pair order (<see cref="Contacts"/>). Reads: shape geometry, this step's shape
+        /// poses, bounds and motion bounds, fat boxes, body velocities and awake flags. Writes:
+        /// the contact graph (manifolds, flags, destroyed contacts), <see cref="Contacts"/>,
+        /// <see cref="StatContactCount"/> and <see cref="StatMaxPenetration"/>.
+        /// Two things of later stages happen here, because moving them would change results or
+        /// lose data: a sleeping dynamic body that a new manifold touches wakes at once, so that
+        /// its own pairs with other sleepers run in this same stage (the second pass below; the
+        /// Islands stage then only wakes through existing constraints); and a touching contact
+        /// whose fat boxes parted records its End event before it is destroyed (its shapes and
+        /// points are gone by SleepAndEvents, which publishes it in pair order).
         /// </summary>
-        internal void AddPair(int shapeA, int shapeB)
-        {
-            ShapeStorage s = Shapes;
-            int bodyA = s.Body[shapeA], bodyB = s.Body[shapeB];
-            if (bodyA == bodyB) return;
-            bool sensor = s.IsSensor[shapeA] || s.IsSensor[shapeB];
-            BodyType ta = Bodies.Type[bodyA], tb = Bodies.Type[bodyB];
-            if (sensor ? ta == BodyType.Static && tb == BodyType.Static : ta != BodyType.Dynamic && tb != BodyType.Dynamic) return;
-            if ((s.CollidesWith[shapeA] & (1u << s.Layer[shapeB])) == 0 || (s.CollidesWith[shapeB] & (1u << s.Layer[shapeA])) == 0) return;
-            if (!sensor && JointBlocksCollision(bodyA, bodyB)) return;
-            if (IgnoresPair(shapeA, shapeB)) return;
-            ShapeType ka = s.Geometry[shapeA].Type, kb = s.Geometry[shapeB].Type;
-            if (!CollisionTable.Has(ka, kb)) return;
-            if (ContactGraph.Find(shapeA, shapeB) >= 0) return;
-            // Shape A has the lower type (the table's order), ties broken by slot.
-            if (kb < ka || (kb == ka && shapeB < shapeA))
-            {
-                (shapeA, shapeB) = (shapeB, shapeA);
-                (bodyA, bodyB) = (bodyB, bodyA);
-            }
-            ContactGraph.Create(shapeA, shapeB, bodyA, bodyB, sensor);
-        }
-
-        // Runs the pair functions of every contact with an awake body, carries impulses over
-        // by feature id, wakes sleeping bodies that an awake one touches, and lists the
-        // manifolds for the solver in shape-pair order.
-        void UpdateContacts(float dt)
+        void NarrowPhase(float dt)
         {
             Contacts.Clear();
             _anyWoken = false;
@@ -210,9 +91,7 @@ namespace Fulcrum
             if (!awakeA && !awakeB) return true;
 
             int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
-            // Fat boxes only change when a proxy moves: check whether they parted only then.
-            if ((_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
-                !BroadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(BroadPhase.FatAabb(Shapes.ProxyId[shapeB])))
+            if (FatBoxesParted(shapeA, shapeB))
             {
                 if ((ct.Flags & ContactFlags.Touching) != 0) RecordStepEnd(c);
                 g.Destroy(c);
@@ -224,12 +103,9 @@ namespace Fulcrum
             ContactBuffer buffer = _contactBuffer;
             float speculative = 0;
             bool reduced = false;
-            // Tight bounds farther apart than any speculative distance the pair could have
-            // (each shape's own motion bound): no point can come out.
-            float reach = sensor ? 0 : SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
             bool reuse = !sensor && ManifoldReuseEnabled;
             Pose poseA = default, poseB = default;
-            if (Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB]))
+            if (InReach(shapeA, shapeB, sensor))
             {
                 if (!sensor) speculative = SpeculativeBase + MotionBound(shapeA, shapeB, dt);
                 if (reuse)
@@ -293,8 +169,22 @@ namespace Fulcrum
             return true;
         }
 
+        // The pair-liveness checks, the same for the serial pass and the parallel candidates.
+        // Fat boxes only change when a proxy moves: whether they parted is checked only then.
+        bool FatBoxesParted(int shapeA, int shapeB) =>
+            (_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
+            !_broadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(_broadPhase.FatAabb(Shapes.ProxyId[shapeB]));
+
+        // Tight bounds farther apart than any speculative distance the pair could have (each
+        // shape's own motion bound; none for a sensor) cannot give a point.
+        bool InReach(int shapeA, int shapeB, bool sensor)
+        {
+            float reach = sensor ? 0 : SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
+            return Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB]);
+        }
+
         // A sleeping dynamic body that a listed contact touches wakes (its pairs are then run by
-        // UpdateContacts' second pass).
+        // the narrow phase's second pass).
         void WakeSleeper(int body, bool awake)
         {
             if (awake || Bodies.Type[body] != BodyType.Dynamic) return;
@@ -321,11 +211,7 @@ namespace Fulcrum
                 bool awakeA = Bodies.Awake[ct.BodyA], awakeB = Bodies.Awake[ct.BodyB];
                 if (!awakeA && !awakeB || (ct.Flags & ContactFlags.Sensor) != 0) continue;
                 int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
-                if ((_fatBoxStep[shapeA] == _stepIndex || _fatBoxStep[shapeB] == _stepIndex) &&
-                    !BroadPhase.FatAabb(Shapes.ProxyId[shapeA]).Overlaps(BroadPhase.FatAabb(Shapes.ProxyId[shapeB])))
-                    continue;
-                float reach = SpeculativeBase + _shapeMotion[shapeA] + _shapeMotion[shapeB];
-                if (!Shapes.WorldAabb[shapeA].Expanded(reach).Overlaps(Shapes.WorldAabb[shapeB])) continue;
+                if (FatBoxesParted(shapeA, shapeB) || !InReach(shapeA, shapeB, false)) continue;
                 // The serial pass will most likely carry these manifolds over (it decides again).
                 if (reuse && CanReuseManifolds(ct, SpeculativeBase + MotionBound(shapeA, shapeB, dt), StepShapePose(shapeA), StepShapePose(shapeB)))
                     continue;

@@ -1,0 +1,216 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Dynamics
+{
+    internal sealed partial class SolverContext
+    {
+        void RunJoint(ref JointData j, JointSolver.Pass pass)
+        {
+            SolverBody a = Bodies[j.SolverA];
+            SolverBody b = Bodies[j.SolverB];
+            JointSolver.Run(ref j, ref a, ref b, pass, _jointParameters);
+            if (a.IsDynamic != 0) Bodies[j.SolverA] = a;
+            if (b.IsDynamic != 0) Bodies[j.SolverB] = b;
+        }
+
+        // ---- passes ---------------------------------------------------------------------
+
+        /// <summary>v += h (g + F/m), w += h I^-1 tau for the dynamic solver bodies (TGS substeps).</summary>
+        public void IntegrateVelocities()
+        {
+            _bodyJob.Positions = false;
+            if (Pool != null) Pool.For(_bodyJob, 1, BodyCount, 4 * MinChunk);
+            else _bodyJob.Execute(1, BodyCount);
+        }
+
+        /// <summary>Levels the step's bodies and collects the contacts between levels for <see cref="Shock"/>.</summary>
+        public void PrepareShock(IslandBuilder islands) =>
+            _shock.Build(Bodies, BodyCount, _manifolds, islands.Manifolds, islands.ManifoldCount, _indexOfSlot, _settings.LinearSlop, _settings.ShockDepth, _dt);
+
+        /// <summary>The shock-propagation sweep of the substep (see <see cref="ShockPropagation"/>).</summary>
+        public void Shock()
+        {
+            Vector3 g = _settings.Gravity;
+            float length = g.Length();
+            _shock.Sweep(Bodies, _settings.ShockDepth, length > 0 ? -g / length : Vector3.Zero);
+        }
+
+        /// <summary>
+        /// dp += v h and dq = exp(w h) dq for every moving solver body (TGS substeps); a dynamic
+        /// body whose principal moments differ turns as a free body does
+        /// (<see cref="Integrator.RotateFreeBody"/>), so that its angular momentum, not its
+        /// angular velocity, is what carries over between constraint impulses (the gyroscopic
+        /// terms).
+        /// </summary>
+        public void IntegratePositions()
+        {
+            _bodyJob.Positions = true;
+            if (Pool != null) Pool.For(_bodyJob, 1, BodyCount, 4 * MinChunk);
+            else _bodyJob.Execute(1, BodyCount);
+        }
+
+        /// <summary>Velocity or position integration of the solver bodies [start, end).</summary>
+        sealed class BodyJob : IRangeJob
+        {
+            readonly SolverContext _c;
+            public bool Positions;
+
+            public BodyJob(SolverContext context) => _c = context;
+
+            public void Execute(int start, int end)
+            {
+                SolverContext c = _c;
+                SolverBody[] bodies = c.Bodies;
+                BodyStorage s = c._storage;
+                if (Positions)
+                {
+                    float h = c._h;
+                    float speedCap = c._settings.MaxLinearSpeed;
+                    for (int k = start; k < end; k++)
+                    {
+                        ref SolverBody body = ref bodies[k];
+                        // The cap holds for what the constraints added too: a light body jointed
+                        // to a heavy one in a contradictory pose was flung at 1e5 m/s (WorldFuzz).
+                        if (body.IsDynamic != 0) Integrator.ClampSpeed(speedCap, s.Radius[c.BodySlot[k]], ref body.LinearVelocity, ref body.AngularVelocity);
+                        body.DeltaPosition += h * body.LinearVelocity;
+                        if (body.AngularVelocity == Vector3.Zero) continue;
+                        int slot = c.BodySlot[k];
+                        Vector3 ii = s.InverseInertiaPrincipal[slot];
+                        if (body.IsDynamic == 0 || (ii.X == ii.Y && ii.Y == ii.Z))
+                        {
+                            body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
+                            continue;
+                        }
+                        Quaternion start0 = c._startRotation[k];
+                        Quaternion q = body.DeltaRotation * start0;
+                        Integrator.RotateFreeBody(ref q, ref body.AngularVelocity, ii, s.InertiaFrame[slot], h);
+                        body.DeltaRotation = q * Quaternion.Conjugate(start0);
+                    }
+                    return;
+                }
+                Vector3 g = c._settings.Gravity;
+                float maxSpeed = c._settings.MaxLinearSpeed;
+                for (int k = start; k < end; k++)
+                {
+                    ref SolverBody body = ref bodies[k];
+                    if (body.IsDynamic == 0) continue;
+                    Integrator.IntegrateVelocity(s, c.BodySlot[k], g, c._h, maxSpeed, ref body.LinearVelocity, ref body.AngularVelocity);
+                }
+            }
+        }
+
+        /// <summary>
+        /// Applies the accumulated impulses of every constraint. The wide contacts also take their
+        /// separations at the bodies' pose now, which the biased passes that follow read.
+        /// </summary>
+        public void WarmStart() => RunColors(ColorPass.WarmStart);
+
+        /// <summary>
+        /// One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out)
+        /// or not (relax). A biased pass takes the wide contacts' separations from the last
+        /// <see cref="WarmStart"/>: the bodies must not have moved since.
+        /// </summary>
+        public void Solve(bool useBias) => RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
+
+        /// <summary>Restitution's free approach speeds from the velocities now (TGS, each substep; see ContactSolver.RecordImpact).</summary>
+        public void RefreshApproach() => RunColors(ColorPass.Approach);
+
+        /// <summary>The restitution pass over every contact.</summary>
+        public void ApplyRestitution() => RunColors(ColorPass.Restitution);
+
+        /// <summary>One non-linear Gauss-Seidel position pass (PGS).</summary>
+        public void SolvePositions() => RunColors(ColorPass.Position);
+
+        // Colour by colour: the constraints of one colour touch disjoint dynamic bodies, so with
+        // a worker pool they are split between threads; the overflow batch runs on the caller.
+        void RunColors(ColorPass pass)
+        {
+            ColorJob job = _colorJob;
+            job.Pass = pass;
+            for (int c = 0; c < Buckets; c++)
+            {
+                job.WideStart = _wideStart[c];
+                job.WideCount = _wideStart[c + 1] - _wideStart[c];
+                job.ContactStart = _scalarStart[c];
+                job.ContactCount = _scalarStart[c + 1] - _scalarStart[c];
+                job.JointStart = _jointStart[c];
+                int count = job.WideCount + job.ContactCount + (_jointStart[c + 1] - _jointStart[c]);
+                if (count == 0) continue;
+                // A wide group is a vector's worth of manifolds: split those finer.
+                int minChunk = 2 * job.WideCount > count ? MinChunk / 8 : MinChunk;
+                if (Pool != null && c < ConstraintColoring.MaxColors) Pool.For(job, 0, count, minChunk);
+                else job.Execute(0, count);
+            }
+        }
+
+        /// <summary>Constraints (or bodies) a thread takes at a time: below this, splitting costs more than it saves.</summary>
+        const int MinChunk = 32;
+
+        enum ColorPass : byte { WarmStart, Solve, Relax, Restitution, Approach, Position }
+
+        /// <summary>One pass over the items [start, end) of a colour: its contacts, then its joints.</summary>
+        sealed class ColorJob : IRangeJob
+        {
+            readonly SolverContext _c;
+            public ColorPass Pass;
+            public int WideStart, WideCount, ContactStart, ContactCount, JointStart;
+
+            public ColorJob(SolverContext context) => _c = context;
+
+            public void Execute(int start, int end)
+            {
+                SolverContext c = _c;
+#if NET
+                int wideEnd = Math.Min(end, WideCount);
+                if (start < wideEnd)
+                {
+                    int first = WideStart + start, last = WideStart + wideEnd;
+                    switch (Pass)
+                    {
+                        case ColorPass.WarmStart: ContactSolverWide.WarmStart(c._wide, first, last, c.Bodies, c._wideBodies); break;
+                        case ColorPass.Solve: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, true); break;
+                        case ColorPass.Relax: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, false); break;
+                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies); break;
+                        default:
+                            // The position pass needs only geometry, which the scalar constraints keep.
+                            for (int g = first; g < last; g++)
+                            {
+                                ReadOnlySpan<int> lanes = c.WideLanes(g);
+                                for (int lane = 0; lane < lanes.Length; lane++)
+                                    ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
+                            }
+                            break;
+                    }
+                }
+#endif
+                start = Math.Max(start, WideCount) - WideCount;
+                end -= WideCount;
+                if (end <= 0) return;
+                int contactEnd = Math.Min(end, ContactCount);
+                for (int i = start; i < contactEnd; i++)
+                {
+                    ref ContactConstraint k = ref c.Contacts[c._scalarContacts[ContactStart + i]];
+                    switch (Pass)
+                    {
+                        case ColorPass.WarmStart: ContactSolver.WarmStart(ref k, c.Points, c.Bodies); break;
+                        case ColorPass.Solve: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, true); break;
+                        case ColorPass.Relax: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, false); break;
+                        case ColorPass.Restitution: ContactSolver.ApplyRestitution(ref k, c.Points, c.Bodies, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Approach: ContactSolver.RefreshApproach(ref k, c.Points, c.Bodies); break;
+                        default: ContactPositionSolver.Solve(ref k, c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt); break;
+                    }
+                }
+                if (Pass == ColorPass.Restitution || Pass == ColorPass.Approach) return;
+                JointSolver.Pass jointPass = Pass == ColorPass.WarmStart ? JointSolver.Pass.WarmStart
+                    : Pass == ColorPass.Solve ? JointSolver.Pass.Solve
+                    : Pass == ColorPass.Relax ? JointSolver.Pass.Relax
+                    : JointSolver.Pass.Position;
+                for (int i = Math.Max(start, ContactCount); i < end; i++)
+                    c.RunJoint(ref c._joints.Data[c.JointOrder[JointStart + i - ContactCount]], jointPass);
+            }
+        }
+    }
+}

@@ -1,0 +1,149 @@
+using System;
+using System.Numerics;
+using Fulcrum.Collision;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum
+{
+    public sealed partial class World
+    {
+        // Broad-phase state. The margin policy is written down in CollisionMargins.
+        BroadPhase _broadPhase = new BroadPhase();
+        // Per shape slot: how far the shape can move in this step (refreshed for awake moving
+        // shapes by the broad phase; 0 for static ones), and the step its fat box last changed.
+        float[] _shapeMotion = Array.Empty<float>();
+        // Per shape slot: the farthest its geometry reaches from its own origin (manifold reuse
+        // bounds how far a rotation can move a shape's points with it).
+        float[] _shapeRadius = Array.Empty<float>();
+        // Per shape slot: its world pose as the broad phase computed it this step (stamped with
+        // the step index), so the narrow phase does not rebuild it for every pair.
+        Pose[] _shapePose = Array.Empty<Pose>();
+        long[] _shapePoseStep = Array.Empty<long>();
+        long[] _fatBoxStep = Array.Empty<long>();
+
+        float SpeculativeBase => CollisionMargins.SpeculativeDistance(_settings.LinearSlop);
+
+        void OnShapeAdded(int shape)
+        {
+            ContactGraph.EnsureShapeCapacity(Shapes.SlotCount);
+            if (_shapeMotion.Length < Shapes.SlotCount)
+            {
+                int n = Math.Max(Shapes.SlotCount, 2 * _shapeMotion.Length);
+                Array.Resize(ref _shapeMotion, n);
+                Array.Resize(ref _shapeRadius, n);
+                Array.Resize(ref _shapePose, n);
+                Array.Resize(ref _shapePoseStep, n);
+                Array.Resize(ref _fatBoxStep, n);
+            }
+            _shapeMotion[shape] = 0;
+            _shapePoseStep[shape] = -1;
+            Aabb local = Shapes.Geometry[shape].ComputeAabb(Pose.Identity);
+            _shapeRadius[shape] = local.Center.Length() + local.Extents.Length();
+            _fatBoxStep[shape] = _stepIndex;
+            int b = Shapes.Body[shape];
+            bool isStatic = Bodies.Type[b] == BodyType.Static;
+            Aabb fat = Shapes.WorldAabb[shape].Expanded(CollisionMargins.AabbMargin + SpeculativeBase);
+            Shapes.ProxyId[shape] = _broadPhase.CreateProxy(fat, shape, isStatic);
+            OnCcdShapeAdded(b);
+        }
+
+        void OnShapeRemoved(int shape)
+        {
+            int edge = ContactGraph.FirstEdge(shape);
+            while (edge >= 0)
+            {
+                int next = ContactGraph.NextEdge(edge);
+                int c = edge >> 1;
+                if ((ContactGraph.Contacts[c].Flags & ContactFlags.Touching) != 0)
+                    RecordRemovalEnd(c);
+                ContactGraph.Destroy(c);
+                edge = next;
+            }
+            _broadPhase.DestroyProxy(Shapes.ProxyId[shape]);
+            Shapes.ProxyId[shape] = -1;
+            OnCcdShapeRemoved(Shapes.Body[shape]);
+            ForgetIgnoredPairs(shape);
+        }
+
+        // The shape's world pose: this step's broad-phase copy for awake moving shapes, computed
+        // afresh for the others (static, sleeping).
+        Pose StepShapePose(int shape) => _shapePoseStep[shape] == _stepIndex ? _shapePose[shape] : ShapeWorldPose(shape);
+
+        /// <summary>
+        /// <see cref="StepStage.BroadPhase"/>: refreshes the bounds of awake moving shapes, swept
+        /// over their predicted motion in this step, moves the proxies whose swept bounds left
+        /// their fat boxes (or whose fat boxes became far too loose), then finds the new pairs,
+        /// which the pair filter <see cref="AddPair"/> turns into contacts. Reads: body poses,
+        /// velocities and awake flags, shape geometry, layers and joints (through the filter).
+        /// Writes: the shapes' world bounds, this step's shape poses and motion bounds, the
+        /// proxies' fat boxes (and the step they changed), new contacts in the contact graph.
+        /// </summary>
+        void BroadPhase(float dt)
+        {
+            ShapeStorage s = Shapes;
+            BodyStorage b = Bodies;
+            float grow = SpeculativeBase;
+            for (int k = 0; k < s.ActiveCount; k++)
+            {
+                int i = s.Active[k];
+                int body = s.Body[i];
+                if (b.Type[body] == BodyType.Static || !b.Awake[body]) continue;
+                Pose pose = ShapeWorldPose(i);
+                _shapePose[i] = pose;
+                _shapePoseStep[i] = _stepIndex;
+                Aabb tight = s.Geometry[i].ComputeAabb(pose);
+                s.WorldAabb[i] = tight;
+                float angular = b.AngularVelocity[body].Length() * dt * Reach(tight, b.Center[body]);
+                Aabb swept = tight.Expanded(grow + angular);
+                Vector3 move = b.LinearVelocity[body] * dt;
+                _shapeMotion[i] = move.Length() + angular;
+                swept = new Aabb(swept.Min + Vector3.Min(move, Vector3.Zero), swept.Max + Vector3.Max(move, Vector3.Zero));
+                if (RefitProxy(s.ProxyId[i], swept)) _fatBoxStep[i] = _stepIndex;
+            }
+            _broadPhase.UpdatePairs(this);
+        }
+
+        // True when the proxy got a new fat box.
+        bool RefitProxy(int proxy, in Aabb swept)
+        {
+            ref readonly Aabb fat = ref _broadPhase.FatAabb(proxy);
+            Aabb wanted = swept.Expanded(CollisionMargins.AabbMargin);
+            // A fat box four times the area it needs came from a fast phase that ended.
+            if (fat.Contains(swept) && fat.SurfaceArea <= 4f * wanted.SurfaceArea) return false;
+            _broadPhase.MoveProxy(proxy, wanted);
+            return true;
+        }
+
+        // The farthest a shape's bounds reach from its body's centre of mass.
+        static float Reach(in Aabb box, Vector3 center) => Vector3.Distance(box.Center, center) + box.Extents.Length();
+
+        /// <summary>
+        /// The pair filter: called by the broad phase for each new overlap of fat boxes.
+        /// Creates a contact when the shapes are on different bodies, at least one of which is
+        /// dynamic (or, for a sensor, not static), their layers accept each other, a pair
+        /// function exists and the pair is not known yet.
+        /// </summary>
+        internal void AddPair(int shapeA, int shapeB)
+        {
+            ShapeStorage s = Shapes;
+            int bodyA = s.Body[shapeA], bodyB = s.Body[shapeB];
+            if (bodyA == bodyB) return;
+            bool sensor = s.IsSensor[shapeA] || s.IsSensor[shapeB];
+            BodyType ta = Bodies.Type[bodyA], tb = Bodies.Type[bodyB];
+            if (sensor ? ta == BodyType.Static && tb == BodyType.Static : ta != BodyType.Dynamic && tb != BodyType.Dynamic) return;
+            if ((s.CollidesWith[shapeA] & (1u << s.Layer[shapeB])) == 0 || (s.CollidesWith[shapeB] & (1u << s.Layer[shapeA])) == 0) return;
+            if (!sensor && JointBlocksCollision(bodyA, bodyB)) return;
+            if (IgnoresPair(shapeA, shapeB)) return;
+            ShapeType ka = s.Geometry[shapeA].Type, kb = s.Geometry[shapeB].Type;
+            if (!CollisionTable.Has(ka, kb)) return;
+            if (ContactGraph.Find(shapeA, shapeB) >= 0) return;
+            // Shape A has the lower type (the table's order), ties broken by slot.
+            if (kb < ka || (kb == ka && shapeB < shapeA))
+            {
+                (shapeA, shapeB) = (shapeB, shapeA);
+                (bodyA, bodyB) = (bodyB, bodyA);
+            }
+            ContactGraph.Create(shapeA, shapeB, bodyA, bodyB, sensor);
+        }
+    }
+}
