@@ -23,15 +23,7 @@ namespace Fulcrum.Tests.Validation
             "-2147483649", "1e-45", "0", "-1", "1e13", "[1e20, 1e20, 1e20]", "[0, 0, 0, 0]", "{\"x\": 1}",
         };
 
-        static string ScenesDir()
-        {
-            for (var d = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); d != null; d = d.Parent)
-            {
-                string candidate = Path.Combine(d.FullName, "Samples~", "Scenes");
-                if (Directory.Exists(candidate)) return candidate;
-            }
-            throw new AssertionException("Samples~/Scenes not found above the test directory");
-        }
+        static string ScenesDir() => PackageRoot.ScenesDirectory;
 
         static int _built;
 

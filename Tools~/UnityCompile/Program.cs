@@ -88,6 +88,12 @@ static class Program
                 if (pre == "nunit.framework.dll") { references.Add(compiler.NUnitFramework); notes.Add($"NUnit {compiler.NUnitVersion}"); }
                 else { Console.WriteLine($"FAILED {a.Name} ({rel}): precompiled reference {pre} is unknown here"); blocked = true; }
             }
+            if (a.PrecompiledReferences.Contains("nunit.framework.dll"))
+                foreach (string problem in NUnit35.Check(a.Sources))
+                {
+                    Console.WriteLine($"FAILED {a.Name}: {Path.GetRelativePath(root, problem)}");
+                    blocked = true;
+                }
             if (blocked)
             {
                 Console.WriteLine($"FAILED {a.Name} ({rel}): not compiled ({string.Join("; ", notes)})");
