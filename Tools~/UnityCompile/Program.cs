@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Text.Json;
+using System.Text.RegularExpressions;
 
 namespace Fulcrum.UnityCompile;
 
@@ -11,8 +12,8 @@ namespace Fulcrum.UnityCompile;
 /// import from this package (the package folder, and each sample of package.json as if
 /// imported into Assets), and compiles each as its own assembly with
 /// <see cref="UnityLikeCompiler"/>, in reference order, against the other assemblies' outputs,
-/// the UnityEngine/UnityEditor stubs of Tests/UnityCompileCheck~ (plus the few types only
-/// the samples use, in SampleStubs/), and NUnit for asmdefs that list nunit.framework.dll.
+/// the UnityEngine/UnityEditor stubs of Tests/UnityCompileCheck~ (plus, from SampleStubs/,
+/// the few types only the samples use that those stubs lack), and NUnit for asmdefs that list nunit.framework.dll.
 /// Exit code 0 when every assembly compiled without a warning.
 /// Usage: dotnet run --project Tools~/UnityCompile [-- PACKAGE_ROOT]
 /// </summary>
@@ -47,8 +48,13 @@ static class Program
 
         // The UnityEngine/UnityEditor stand-ins (not ours to warn about: compiled without -warnaserror).
         string stubs = "UnityEngine";
-        var stubSources = new List<string> { Path.Combine(root, "Tests", "UnityCompileCheck~", "UnityEngineStubs.cs") };
-        stubSources.AddRange(Directory.GetFiles(Path.Combine(root, "Tools~", "UnityCompile", "SampleStubs"), "*.cs").OrderBy(f => f, StringComparer.Ordinal));
+        string sharedStubs = Path.Combine(root, "Tests", "UnityCompileCheck~", "UnityEngineStubs.cs");
+        var stubSources = new List<string> { sharedStubs };
+        // SampleStubs/NAME.cs declares type NAME, needed only while the shared stubs lack it.
+        string shared = File.ReadAllText(sharedStubs);
+        foreach (string extra in Directory.GetFiles(Path.Combine(root, "Tools~", "UnityCompile", "SampleStubs"), "*.cs").OrderBy(f => f, StringComparer.Ordinal))
+            if (!Regex.IsMatch(shared, @"\b(class|struct|enum|interface)\s+" + Regex.Escape(Path.GetFileNameWithoutExtension(extra)) + @"\b"))
+                stubSources.Add(extra);
         var (stubsOk, stubsOutput) = compiler.Compile(stubs, stubSources, Array.Empty<string>(), null, allowUnsafe: false, warningsAsErrors: false);
         if (!stubsOk)
         {
