@@ -30,15 +30,19 @@ namespace Fulcrum.Tests
         /// <summary>The package's Samples~/Scenes folder.</summary>
         public static string ScenesDirectory => System.IO.Path.Combine(Path, "Samples~", "Scenes");
 
-        static string Find()
+        static string Find() =>
+            FindFrom(Environment.GetEnvironmentVariable(EnvironmentVariable), TestContext.CurrentContext.TestDirectory, Directory.GetCurrentDirectory())
+            ?? throw new AssertionException($"the {Name} package folder was not found above the test directory or the current directory; set {EnvironmentVariable}");
+
+        /// <summary>The search of <see cref="Path"/> from the given variable and start folders; null if nothing is found.</summary>
+        internal static string? FindFrom(string? fromEnvironment, params string[] starts)
         {
-            string? fromEnvironment = Environment.GetEnvironmentVariable(EnvironmentVariable);
             if (!string.IsNullOrEmpty(fromEnvironment))
             {
                 if (IsPackage(fromEnvironment!)) return System.IO.Path.GetFullPath(fromEnvironment!);
                 throw new AssertionException($"{EnvironmentVariable}={fromEnvironment}: no package.json of {Name} there");
             }
-            foreach (string start in new[] { TestContext.CurrentContext.TestDirectory, Directory.GetCurrentDirectory() })
+            foreach (string start in starts)
             {
                 for (var d = new DirectoryInfo(start); d != null; d = d.Parent)
                 {
@@ -53,7 +57,7 @@ namespace Fulcrum.Tests
                             if (IsPackage(p)) return p;
                 }
             }
-            throw new AssertionException($"the {Name} package folder was not found above the test directory or the current directory; set {EnvironmentVariable}");
+            return null;
         }
 
         static bool IsPackage(string folder)
