@@ -139,7 +139,8 @@ namespace Fulcrum.Tests.Validation
             sb.Append('1');
             for (int i = 0; i < 100_000; i++) sb.Append(close);
             IReadOnlyList<SceneError> errors = SceneFile.Check(sb.ToString(), out _);
-            Assert.That(errors, Has.Count.EqualTo(1));
+            // errors.Count, not Has.Count: NUnit 3.5/3.6 look Count up on the runtime type (an array here) and miss it.
+            Assert.That(errors.Count, Is.EqualTo(1));
             Assert.That(errors[0].Message, Does.Contain("nesting deeper than " + JsonParser.MaxDepth));
         }
     }

@@ -14,8 +14,10 @@ namespace Fulcrum.UnityCompile;
 /// <see cref="UnityLikeCompiler"/>, in reference order, against the other assemblies' outputs,
 /// the UnityEngine/UnityEditor stubs of Tests/UnityCompileCheck~ (plus, from SampleStubs/,
 /// the few types only the samples use that those stubs lack), and NUnit for asmdefs that list nunit.framework.dll.
-/// Exit code 0 when every assembly compiled without a warning.
-/// Usage: dotnet run --project Tools~/UnityCompile [-- PACKAGE_ROOT]
+/// Exit code 0 when every assembly compiled without a warning. With --run-tests, then runs
+/// the test assembly so compiled (<see cref="UnityTestRun"/>; arguments after it go to
+/// dotnet vstest, e.g. --TestCaseFilter:FullyQualifiedName~Scenes).
+/// Usage: dotnet run --project Tools~/UnityCompile [-- [PACKAGE_ROOT] [--run-tests [VSTEST ARGS]]]
 /// </summary>
 static class Program
 {
@@ -23,8 +25,11 @@ static class Program
 
     static int Main(string[] args)
     {
-        string root = args.Length > 0 ? Path.GetFullPath(args[0]) : FindPackageRoot(Directory.GetCurrentDirectory());
-        var compiler = new UnityLikeCompiler(Path.Combine(root, ".artifacts", "unity-compile"));
+        int runAt = Array.IndexOf(args, "--run-tests");
+        string[] own = runAt >= 0 ? args.Take(runAt).ToArray() : args;
+        string root = own.Length > 0 ? Path.GetFullPath(own[0]) : FindPackageRoot(Directory.GetCurrentDirectory());
+        string compiled = Path.Combine(root, ".artifacts", "unity-compile");
+        var compiler = new UnityLikeCompiler(compiled);
         int failures = 0;
 
         var orphans = new List<string>();
@@ -122,7 +127,8 @@ static class Program
         Console.WriteLine(failures == 0
             ? $"{done.Count} assemblies compiled as Unity would (C# 9, .NET Standard 2.1, csc.rsp, warnings as errors)"
             : $"{failures} problem(s); {done.Count(d => d.Value)} of {assemblies.Count} assemblies compiled");
-        return failures == 0 ? 0 : 1;
+        if (failures > 0) return 1;
+        return runAt >= 0 ? UnityTestRun.Run(root, compiled, args.Skip(runAt + 1).ToArray()) : 0;
     }
 
     static AsmdefAssembly? Resolve(List<AsmdefAssembly> assemblies, string reference) =>
