@@ -13,7 +13,8 @@ namespace Fulcrum.UnityCompile;
 /// imported into Assets), and compiles each as its own assembly with
 /// <see cref="UnityLikeCompiler"/>, in reference order, against the other assemblies' outputs,
 /// the UnityEngine/UnityEditor stubs of Tests/UnityCompileCheck~ (plus, from SampleStubs/,
-/// the few types only the samples use that those stubs lack), and NUnit for asmdefs that list nunit.framework.dll.
+/// the few types only the samples use that those stubs lack), and NUnit for asmdefs that
+/// list nunit.framework.dll.
 /// Exit code 0 when every assembly compiled without a warning. With --run-tests, then runs
 /// the test assembly so compiled (<see cref="UnityTestRun"/>; arguments after it go to
 /// dotnet vstest, e.g. --TestCaseFilter:FullyQualifiedName~Scenes).
