@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using Fulcrum;
 using Fulcrum.Components;
 
 namespace BridgeSample
@@ -38,28 +37,18 @@ namespace BridgeSample
         public static int Main(string[] args)
         {
             bool threaded = args.Length > 0 && args[0] == "--thread";
-            PhysicsBridgeSettings settings = PhysicsBridgeSettings.Default;
-            settings.FixedDt = 1f / 120f;
-            if (threaded) settings.ThreadRateHz = 120;
             var printer = new ContactPrinter();
-            var floor = new GameObject("floor", new Vector3(0, -0.5f, 0));
-            var paddle = new GameObject("paddle", new Vector3(-3, 0.5f, 0));
-            var ball = new GameObject("ball", new Vector3(0, 2, 0));
+            var floor = new GameObject("floor", BridgeScene.FloorStart);
+            var paddle = new GameObject("paddle", BridgeScene.PaddleStart);
+            var ball = new GameObject("ball", BridgeScene.BallStart);
 
-            using (var bridge = new PhysicsBridge(new World(), settings) { ContactListener = printer })
+            using (PhysicsBridge bridge = BridgeScene.Create(floor, paddle, ball, printer, threaded))
             {
-                bridge.Register(floor, BodyDef.Static(default), ShapeDef.Of(ShapeGeometry.Box(new Vector3(10, 0.5f, 10))), DriveMode.Game);
-                bridge.Register(paddle, BodyDef.Default, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.25f, 0.5f, 1))), DriveMode.Game);
-                BodyDef ballDef = BodyDef.Default;
-                ballDef.Mass = 1f;
-                ProxyHandle b = bridge.Register(ball, ballDef, ShapeDef.Of(ShapeGeometry.Sphere(0.5f)));
-                if (!threaded) bridge.SetHaptics(b, true);
-
                 Console.WriteLine(threaded ? "bridge with a 120 Hz physics thread under a 60 Hz loop" : "bridge stepping at 120 Hz inside a 60 Hz loop");
                 const float frame = 1f / 60f;
                 for (int f = 0; f < 90; f++)
                 {
-                    paddle.Position.X += 2f * frame;   // game logic moves the paddle
+                    paddle.Position.X += BridgeScene.PaddleSpeed * frame;   // game logic moves the paddle
                     bridge.SyncFromGame();
                     bridge.Step(frame);
                     bridge.SyncToGame();              // the renderer would draw here

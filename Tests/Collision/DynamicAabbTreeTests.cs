@@ -62,7 +62,7 @@ namespace Fulcrum.Tests.Collision
             tree.Validate();
             Assert.That(tree.ProxyCount, Is.EqualTo(boxes.Count));
             // Balance: height within a small factor of log2(n).
-            Assert.That(tree.Height, Is.LessThan(4 * Math.Log2(boxes.Count) + 2));
+            Assert.That(tree.Height, Is.LessThan(4 * Math.Log(boxes.Count, 2) + 2));
 
             for (int q = 0; q < 200; q++)
             {

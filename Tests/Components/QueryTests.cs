@@ -81,7 +81,7 @@ namespace Fulcrum.Tests.Components
             var results = new Collider[8];
             int n = scene.OverlapSphere(new Vector3(3, 0.2f, 0), 0.5f, results);
             Assert.That(n, Is.EqualTo(2));
-            Assert.That(results, Does.Contain(ground).And.Contain(ball));
+            Assert.That(results, Has.Member(ground).And.Member(ball));
             var hits = new RaycastHit[8];
             long bytes = AllocationProbe.SteadyStateBytes(() =>
             {

@@ -7,9 +7,13 @@ namespace Fulcrum.Tests.Foundation
 {
     public class AllocationTests
     {
+        // MethodImplOptions.AggressiveOptimization by value: .NET Standard 2.1 (what Unity
+        // compiles against) lacks the name; .NET honours the bit and Mono ignores it.
+        const MethodImplOptions AggressiveOptimization = (MethodImplOptions)512;
+
         // Fully optimised from the first call: a tier-0 loop would be patched by on-stack
         // replacement mid-measurement, and that transition itself allocates a few bytes.
-        [MethodImpl(MethodImplOptions.AggressiveOptimization | MethodImplOptions.NoInlining)]
+        [MethodImpl(AggressiveOptimization | MethodImplOptions.NoInlining)]
         public static long AllocatedOverSteps(World world, int steps, float dt = 1f / 60f)
         {
             long before = GC.GetAllocatedBytesForCurrentThread();

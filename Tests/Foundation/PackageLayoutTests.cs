@@ -11,13 +11,7 @@ namespace Fulcrum.Tests.Foundation
     /// </summary>
     public class PackageLayoutTests
     {
-        static string Root()
-        {
-            string? dir = TestContext.CurrentContext.TestDirectory;
-            while (dir != null && !File.Exists(Path.Combine(dir, "package.json"))) dir = Path.GetDirectoryName(dir);
-            if (dir == null) Assert.Inconclusive("package root not found from the test directory");
-            return dir!;
-        }
+        static string Root() => PackageRoot.Path;
 
         static bool HiddenFromUnity(string relative) =>
             relative.Split(Path.DirectorySeparatorChar).Any(p => p.StartsWith(".", StringComparison.Ordinal) || p.EndsWith("~", StringComparison.Ordinal) || p == "bin" || p == "obj");

@@ -33,9 +33,7 @@ namespace Fulcrum.Tests.Foundation
         [Test]
         public void Scene_with_soft_bodies_runs_as_in_the_readme()
         {
-            string root = TestContext.CurrentContext.TestDirectory;
-            while (!File.Exists(Path.Combine(root, "package.json"))) root = Path.GetDirectoryName(root)!;
-            SceneInstance scene = SceneBuilder.Build(SceneFile.Load(Path.Combine(root, "Samples~", "Scenes", "jelly.json")));
+            SceneInstance scene = SceneBuilder.Build(SceneFile.Load(Path.Combine(PackageRoot.ScenesDirectory, "jelly.json")));
             SceneSoftBodyBuilder.Build(scene);
             for (int i = 0; i < 180; i++) scene.World.Step(scene.Timestep);
             Assert.That(scene.World.SoftBodyCount(), Is.EqualTo(1));

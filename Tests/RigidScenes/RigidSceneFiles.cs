@@ -12,15 +12,7 @@ namespace Fulcrum.Tests.RigidScenes
         /// <summary>The Samples~/Scenes folder (soft-body meshes are found relative to it).</summary>
         public static string ScenesDirectory => ScenesDir();
 
-        static string ScenesDir()
-        {
-            for (var d = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); d != null; d = d.Parent)
-            {
-                string candidate = Path.Combine(d.FullName, "Samples~", "Scenes");
-                if (Directory.Exists(candidate)) return candidate;
-            }
-            throw new AssertionException("Samples~/Scenes not found above the test directory");
-        }
+        static string ScenesDir() => PackageRoot.ScenesDirectory;
 
         /// <summary>The scene document of Samples~/Scenes/NAME.json.</summary>
         public static SceneDocument Load(string name) => SceneFile.Load(Path.Combine(ScenesDir(), name + ".json"));

@@ -58,7 +58,7 @@ namespace Fulcrum.Tests.Scenes
         [Test]
         public void A_compound_puts_each_child_on_the_body_at_its_pose()
         {
-            string shape = """{ "type": "compound", "children": [ { "shape": { "type": "sphere", "radius": 0.5 }, "position": [-1, 0, 0] }, { "shape": { "type": "box", "halfExtents": [0.5, 0.5, 0.5] }, "position": [1, 0, 0] } ] }""";
+            string shape = "{ \"type\": \"compound\", \"children\": [ { \"shape\": { \"type\": \"sphere\", \"radius\": 0.5 }, \"position\": [-1, 0, 0] }, { \"shape\": { \"type\": \"box\", \"halfExtents\": [0.5, 0.5, 0.5] }, \"position\": [1, 0, 0] } ] }";
             SceneInstance scene = SceneBuilder.Build(SceneFile.Parse(SceneSamples.OneBall(shape: shape)));
             BodyHandle body = scene.GetBody("ball");
             Span<ShapeHandle> shapes = stackalloc ShapeHandle[4];
@@ -72,7 +72,7 @@ namespace Fulcrum.Tests.Scenes
         public void A_convex_shape_builds_a_hull_with_its_polyhedral_mass()
         {
             // The unit corner tetrahedron: volume 1/6, centroid (1/4, 1/4, 1/4).
-            string shape = """{ "type": "convex", "points": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]] }""";
+            string shape = "{ \"type\": \"convex\", \"points\": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]] }";
             SceneInstance scene = SceneBuilder.Build(SceneFile.Parse(SceneSamples.OneBall(shape: shape)));
             BodyHandle body = scene.GetBody("ball");
             Assert.That(scene.World.GetBody(body).Mass, Is.EqualTo(1000f / 6f).Within(1e-2f));
@@ -82,7 +82,7 @@ namespace Fulcrum.Tests.Scenes
         [Test]
         public void A_flat_convex_shape_is_refused_at_its_path()
         {
-            string shape = """{ "type": "compound", "children": [ { "shape": { "type": "sphere", "radius": 0.5 } }, { "shape": { "type": "convex", "points": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]] } } ] }""";
+            string shape = "{ \"type\": \"compound\", \"children\": [ { \"shape\": { \"type\": \"sphere\", \"radius\": 0.5 } }, { \"shape\": { \"type\": \"convex\", \"points\": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]] } } ] }";
             SceneDocument doc = SceneFile.Parse(SceneSamples.OneBall(shape: shape));
             var e = Assert.Throws<SceneException>(() => SceneBuilder.Build(doc))!;
             Assert.That(e.Message, Does.StartWith("$.bodies[0].shape.children[1].shape: "));

@@ -149,18 +149,16 @@ namespace Fulcrum.Tests.Scenes
         [Test]
         public void Every_error_is_reported_at_once_structural_ones_first()
         {
-            string text = """
-            {
-              "format": "fulcrum-scene/1",
-              "timestep": 0,
-              "bodies": [
-                { "name": "a", "shape": { "type": "box", "halfExtents": [1, 0, 1] }, "spin": 3 },
-                { "name": "a", "shape": { "type": "capsule", "radius": 1 } }
-              ],
-              "softBodies": [ { "name": "s", "mesh": { "type": "box", "size": [1, 1, 1] },
-                                "material": { "youngsModulus": 1000, "poissonRatio": 0.5 } } ]
-            }
-            """;
+            string text = @"{
+  ""format"": ""fulcrum-scene/1"",
+  ""timestep"": 0,
+  ""bodies"": [
+    { ""name"": ""a"", ""shape"": { ""type"": ""box"", ""halfExtents"": [1, 0, 1] }, ""spin"": 3 },
+    { ""name"": ""a"", ""shape"": { ""type"": ""capsule"", ""radius"": 1 } }
+  ],
+  ""softBodies"": [ { ""name"": ""s"", ""mesh"": { ""type"": ""box"", ""size"": [1, 1, 1] },
+                    ""material"": { ""youngsModulus"": 1000, ""poissonRatio"": 0.5 } } ]
+}";
             Assert.That(Errors(text).Select(e => e.Path + ": " + e.Message).ToList(), Is.EqualTo(new[]
             {
                 "$.bodies[0].spin: unknown field (expected one of: name, type, shape, mass, density, material, position, rotation, velocity, angularVelocity, ccd)",

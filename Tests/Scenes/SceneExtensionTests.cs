@@ -7,23 +7,19 @@ namespace Fulcrum.Tests.Scenes
     /// <summary>Fields added to fulcrum-scene/1 (documented as extensions in Documentation~/SceneFormat.md).</summary>
     public class SceneExtensionTests
     {
-        const string Stiff = """
-        {
-          "format": "fulcrum-scene/1",
-          "solver": { "type": "tgs", "iterations": 2, "substeps": 8, "contactHertz": 90, "jointHertz": 500, "manifoldReuse": 0.0005 },
-          "bodies": [ { "name": "ball", "shape": { "type": "sphere", "radius": 0.5 }, "position": [0, 5, 0] } ]
-        }
-        """;
+        const string Stiff = @"{
+  ""format"": ""fulcrum-scene/1"",
+  ""solver"": { ""type"": ""tgs"", ""iterations"": 2, ""substeps"": 8, ""contactHertz"": 90, ""jointHertz"": 500, ""manifoldReuse"": 0.0005 },
+  ""bodies"": [ { ""name"": ""ball"", ""shape"": { ""type"": ""sphere"", ""radius"": 0.5 }, ""position"": [0, 5, 0] } ]
+}";
 
-        const string Plastic = """
-        {
-          "format": "fulcrum-scene/1",
-          "bodies": [ { "name": "ground", "type": "static", "shape": { "type": "box", "halfExtents": [5, 0.5, 5] }, "position": [0, -0.5, 0] } ],
-          "softBodies": [ { "name": "slime", "mesh": { "type": "box", "size": [0.3, 0.3, 0.3], "cells": [3, 3, 3] },
-                            "material": { "youngsModulus": 1e3, "poissonRatio": 0.45, "density": 1050 },
-                            "position": [0, 0.15, 0], "plasticity": { "yieldStrain": 0.02, "flowRate": 4 } } ]
-        }
-        """;
+        const string Plastic = @"{
+  ""format"": ""fulcrum-scene/1"",
+  ""bodies"": [ { ""name"": ""ground"", ""type"": ""static"", ""shape"": { ""type"": ""box"", ""halfExtents"": [5, 0.5, 5] }, ""position"": [0, -0.5, 0] } ],
+  ""softBodies"": [ { ""name"": ""slime"", ""mesh"": { ""type"": ""box"", ""size"": [0.3, 0.3, 0.3], ""cells"": [3, 3, 3] },
+                    ""material"": { ""youngsModulus"": 1e3, ""poissonRatio"": 0.45, ""density"": 1050 },
+                    ""position"": [0, 0.15, 0], ""plasticity"": { ""yieldStrain"": 0.02, ""flowRate"": 4 } } ]
+}";
 
         [Test]
         public void Solver_stiffness_fields_reach_the_world_settings_and_round_trip()

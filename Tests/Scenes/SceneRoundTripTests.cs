@@ -39,7 +39,8 @@ namespace Fulcrum.Tests.Scenes
             SceneDocument a = SceneFile.Parse(SceneSamples.Everything);
             SceneDocument b = SceneFile.Parse(SceneSamples.Everything);
             Vector3 g = b.Gravity;
-            b.Gravity = new Vector3(g.X, System.MathF.BitIncrement(g.Y), g.Z);
+            // One ulp towards +infinity (MathF.BitIncrement, which .NET Standard 2.1 lacks): g.Y < 0.
+            b.Gravity = new Vector3(g.X, System.BitConverter.Int32BitsToSingle(System.BitConverter.SingleToInt32Bits(g.Y) - 1), g.Z);
             Assert.That(SceneDifference.Find(a, b), Is.EqualTo("$.Gravity.y: -9.80665 vs -9.806649"));
         }
 

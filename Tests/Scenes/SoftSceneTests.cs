@@ -7,22 +7,20 @@ namespace Fulcrum.Tests.Scenes
 {
     public class SoftSceneTests
     {
-        static string Jelly(string extra = "") => """
-        {
-          "format": "fulcrum-scene/1",
-          "bodies": [
-            { "name": "ground", "type": "static", "shape": { "type": "box", "halfExtents": [10, 0.5, 10] }, "position": [0, -0.5, 0] },
-            { "name": "hook", "type": "static", "shape": { "type": "sphere", "radius": 0.1 }, "position": [0, 5, 0] }
-          ],
-          "softBodies": [
-            { "name": "jelly",
-              "mesh": { "type": "box", "size": [1, 1, 1], "cells": [2, 2, 2] },
-              "material": { "model": "stable-neo-hookean", "youngsModulus": 1e5, "poissonRatio": 0.45, "density": 1000 },
-              "position": [0, 2, 0],
-              "probes": [[0, 0.5, 0]]EXTRA }
-          ]
-        }
-        """.Replace("EXTRA", extra);
+        static string Jelly(string extra = "") => @"{
+  ""format"": ""fulcrum-scene/1"",
+  ""bodies"": [
+    { ""name"": ""ground"", ""type"": ""static"", ""shape"": { ""type"": ""box"", ""halfExtents"": [10, 0.5, 10] }, ""position"": [0, -0.5, 0] },
+    { ""name"": ""hook"", ""type"": ""static"", ""shape"": { ""type"": ""sphere"", ""radius"": 0.1 }, ""position"": [0, 5, 0] }
+  ],
+  ""softBodies"": [
+    { ""name"": ""jelly"",
+      ""mesh"": { ""type"": ""box"", ""size"": [1, 1, 1], ""cells"": [2, 2, 2] },
+      ""material"": { ""model"": ""stable-neo-hookean"", ""youngsModulus"": 1e5, ""poissonRatio"": 0.45, ""density"": 1000 },
+      ""position"": [0, 2, 0],
+      ""probes"": [[0, 0.5, 0]]EXTRA }
+  ]
+}".Replace("EXTRA", extra);
 
         [Test]
         public void Scene_soft_bodies_are_created_with_their_material_position_and_probes()

@@ -10,22 +10,18 @@ namespace Fulcrum.Tests.Scenes
     /// <summary>A soft body's solver and contact settings in the scene format: reading, writing, errors, building.</summary>
     public class SoftSettingsSceneTests
     {
-        const string AllSettings = """
-            , "rotation": [0, 0.38268343, 0, 0.9238795], "velocity": [1.5, -2, 0.25],
-            "substeps": 12, "iterations": 3, "dampingTime": 0.002, "linearDamping": 0.1, "gravityScale": 0.5,
-            "friction": 0.3, "collisionRadius": 0.004, "collideWithShapes": false, "collideWithSoftBodies": false,
-            "selfCollision": true, "layer": 2, "collidesWith": [0, 2, 5]
-            """;
+        const string AllSettings = @", ""rotation"": [0, 0.38268343, 0, 0.9238795], ""velocity"": [1.5, -2, 0.25],
+""substeps"": 12, ""iterations"": 3, ""dampingTime"": 0.002, ""linearDamping"": 0.1, ""gravityScale"": 0.5,
+""friction"": 0.3, ""collisionRadius"": 0.004, ""collideWithShapes"": false, ""collideWithSoftBodies"": false,
+""selfCollision"": true, ""layer"": 2, ""collidesWith"": [0, 2, 5]";
 
-        static string Scene(string extra = "") => $$"""
-        {
-          "format": "fulcrum-scene/1",
-          "softBodies": [
-            { "name": "s", "mesh": { "type": "box", "size": [1, 1, 1], "cells": [2, 2, 2] },
-              "material": { "youngsModulus": 1e5, "poissonRatio": 0.3, "density": 500 }, "position": [1, 2, 3]{{extra}} }
-          ]
-        }
-        """;
+        static string Scene(string extra = "") => $@"{{
+  ""format"": ""fulcrum-scene/1"",
+  ""softBodies"": [
+    {{ ""name"": ""s"", ""mesh"": {{ ""type"": ""box"", ""size"": [1, 1, 1], ""cells"": [2, 2, 2] }},
+      ""material"": {{ ""youngsModulus"": 1e5, ""poissonRatio"": 0.3, ""density"": 500 }}, ""position"": [1, 2, 3]{extra} }}
+  ]
+}}";
 
         static List<string> Errors(string text) => SceneFile.Check(text, out _).Select(e => $"{e.Path}: {e.Message}").ToList();
 

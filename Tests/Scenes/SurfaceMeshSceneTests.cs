@@ -11,37 +11,27 @@ namespace Fulcrum.Tests.Scenes
     /// <summary>The <c>surface</c> soft mesh kind: a closed OBJ surface tetrahedralised at load.</summary>
     public class SurfaceMeshSceneTests
     {
-        static string Scene(string mesh) => $$"""
-        {
-          "format": "fulcrum-scene/1",
-          "softBodies": [
-            { "name": "s", "mesh": {{mesh}},
-              "material": { "youngsModulus": 1e5, "poissonRatio": 0.3, "density": 500 }, "position": [0, 1, 0] }
-          ]
-        }
-        """;
+        static string Scene(string mesh) => $@"{{
+  ""format"": ""fulcrum-scene/1"",
+  ""softBodies"": [
+    {{ ""name"": ""s"", ""mesh"": {mesh},
+      ""material"": {{ ""youngsModulus"": 1e5, ""poissonRatio"": 0.3, ""density"": 500 }}, ""position"": [0, 1, 0] }}
+  ]
+}}";
 
-        static string ScenesDir()
-        {
-            for (var d = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); d != null; d = d.Parent)
-            {
-                string candidate = Path.Combine(d.FullName, "Samples~", "Scenes");
-                if (Directory.Exists(candidate)) return candidate;
-            }
-            throw new AssertionException("Samples~/Scenes not found above the test directory");
-        }
+        static string ScenesDir() => PackageRoot.ScenesDirectory;
 
         [Test]
         public void Surface_mesh_reads_with_default_resolution_and_saves_back()
         {
-            SceneDocument doc = SceneFile.Parse(Scene("""{ "type": "surface", "file": "meshes/blob.obj" }"""));
+            SceneDocument doc = SceneFile.Parse(Scene("{ \"type\": \"surface\", \"file\": \"meshes/blob.obj\" }"));
             var surface = (SceneSoftSurface)doc.SoftBodies[0].Mesh!;
             Assert.That((surface.File, surface.Resolution, surface.IsShell), Is.EqualTo(("meshes/blob.obj", 8, false)));
             Assert.That(SceneFile.Save(doc), Does.Contain("\"type\": \"surface\"").And.Contain("\"resolution\": 8"));
         }
 
-        [TestCase("""{ "type": "surface", "file": "b.obj", "resolution": 1 }""", "$.softBodies[0].mesh.resolution: must be in [2, 64], got 1")]
-        [TestCase("""{ "type": "surface", "file": "b.obj", "resolution": 65 }""", "$.softBodies[0].mesh.resolution: must be in [2, 64], got 65")]
+        [TestCase("{ \"type\": \"surface\", \"file\": \"b.obj\", \"resolution\": 1 }", "$.softBodies[0].mesh.resolution: must be in [2, 64], got 1")]
+        [TestCase("{ \"type\": \"surface\", \"file\": \"b.obj\", \"resolution\": 65 }", "$.softBodies[0].mesh.resolution: must be in [2, 64], got 65")]
         public void Bad_resolution_is_reported_at_its_path(string mesh, string error)
         {
             var errors = SceneFile.Check(Scene(mesh), out _).Select(e => $"{e.Path}: {e.Message}").ToList();

@@ -10,7 +10,7 @@ namespace Fulcrum.Tests.SoftBodies
         static BodyHandle DynamicBox(World world, Vector3 position, Vector3 halfExtents, float density)
         {
             BodyHandle box = world.CreateBody(BodyDef.Dynamic(position));
-            world.AddShape(box, ShapeDef.Of(ShapeGeometry.Box(halfExtents)) with { Density = density });
+            world.AddShape(box, ShapeDef.Of(ShapeGeometry.Box(halfExtents)).With((ref ShapeDef s) => s.Density = density));
             return box;
         }
 
@@ -149,7 +149,7 @@ namespace Fulcrum.Tests.SoftBodies
             BodyHandle table = world.CreateBody(BodyDef.Static(new Vector3(0, 0, 0)));
             world.AddShape(table, ShapeDef.Of(ShapeGeometry.Box(new Vector3(1f, 0.1f, 1f))));
             BodyHandle rod = world.CreateBody(BodyDef.Static(new Vector3(0, 0.5f, 0)));
-            world.AddShape(rod, ShapeDef.Of(ShapeGeometry.Capsule(0.05f, 0.5f)) with { LocalPose = new Fulcrum.Mathematics.Pose(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI / 2)) });
+            world.AddShape(rod, ShapeDef.Of(ShapeGeometry.Capsule(0.05f, 0.5f)).With((ref ShapeDef s) => s.LocalPose = new Fulcrum.Mathematics.Pose(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI / 2))));
             var def = SoftBodyDef.Of(SoftMesh.Cloth(0.6f, 0.6f, 12, 12), MaterialPresets.Cloth, new Vector3(0, 0.7f, 0));
             SoftBody cloth = world.GetSoftBody(world.CreateSoftBody(def));
             for (int i = 0; i < 120; i++) world.Step(SoftBodyScenes.Dt);

@@ -51,7 +51,7 @@ namespace Fulcrum.Tests.SoftBodies
                 "mesh" => ShapeGeometry.TriangleMesh(FloorMesh(2f, 4)),
                 _ => ShapeGeometry.Plane(Vector3.UnitY, 0f),
             };
-            world.AddShape(ground, ShapeDef.Of(geometry) with { Friction = friction });
+            world.AddShape(ground, ShapeDef.Of(geometry).With((ref ShapeDef s) => s.Friction = friction));
             return world;
         }
 
@@ -123,8 +123,8 @@ namespace Fulcrum.Tests.SoftBodies
             Quaternion tilt = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
             var half = new Vector3(3f, 0.25f, 1f);
             // The slope's top face passes through the origin.
-            BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Transform(new Vector3(0, -half.Y, 0), tilt)) with { Rotation = tilt });
-            world.AddShape(ground, ShapeDef.Of(hull ? ShapeGeometry.ConvexHull(BoxCorners(half)) : ShapeGeometry.Box(half)) with { Friction = mu });
+            BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Transform(new Vector3(0, -half.Y, 0), tilt)).With((ref BodyDef s) => s.Rotation = tilt));
+            world.AddShape(ground, ShapeDef.Of(hull ? ShapeGeometry.ConvexHull(BoxCorners(half)) : ShapeGeometry.Box(half)).With((ref ShapeDef s) => s.Friction = mu));
             var def = SoftBodyScenes.Cube(0.2f, 2, Jelly, Vector3.Transform(new Vector3(0, 0.106f, 0), tilt));
             def.Rotation = tilt;
             def.Friction = mu;
@@ -165,7 +165,7 @@ namespace Fulcrum.Tests.SoftBodies
             SoftBody jelly = world.GetSoftBody(world.CreateSoftBody(SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.5f, 0.2f, 0.5f), 5, 2, 5), material, new Vector3(0, 0.105f, 0))));
             BodyHandle body = world.CreateBody(BodyDef.Dynamic(new Vector3(0, 0.32f, 0)));
             var half = new Vector3(0.1f);
-            world.AddShape(body, ShapeDef.Of(hull ? ShapeGeometry.ConvexHull(BoxCorners(half)) : ShapeGeometry.Box(half)) with { Density = 2000f });
+            world.AddShape(body, ShapeDef.Of(hull ? ShapeGeometry.ConvexHull(BoxCorners(half)) : ShapeGeometry.Box(half)).With((ref ShapeDef s) => s.Density = 2000f));
             float mass = world.GetBody(body).Mass;
             SoftBodyScenes.Run(world, 180);
             Vector3 before = jelly.ComputeStats().Momentum + mass * world.GetBody(body).LinearVelocity;
@@ -194,8 +194,8 @@ namespace Fulcrum.Tests.SoftBodies
             var world = new World();
             BodyHandle ground = world.CreateBody(BodyDef.Static(new Vector3(0, -0.25f, 0)));
             var half = new Vector3(0.5f, 0.25f, 1f);
-            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Box(half)) with { LocalPose = new Fulcrum.Mathematics.Pose(new Vector3(-0.5f, 0, 0), Quaternion.Identity) });
-            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.ConvexHull(BoxCorners(half))) with { LocalPose = new Fulcrum.Mathematics.Pose(new Vector3(0.5f, 0, 0), Quaternion.Identity) });
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Box(half)).With((ref ShapeDef s) => s.LocalPose = new Fulcrum.Mathematics.Pose(new Vector3(-0.5f, 0, 0), Quaternion.Identity)));
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.ConvexHull(BoxCorners(half))).With((ref ShapeDef s) => s.LocalPose = new Fulcrum.Mathematics.Pose(new Vector3(0.5f, 0, 0), Quaternion.Identity)));
             SoftBody jelly = world.GetSoftBody(world.CreateSoftBody(SoftBodyScenes.Cube(0.3f, 3, Jelly, new Vector3(0, 0.25f, 0))));
             SoftBodyScenes.Run(world, 90);
             float left = float.MaxValue, right = float.MaxValue;

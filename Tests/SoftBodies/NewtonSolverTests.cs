@@ -129,15 +129,11 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.Throws<InvalidOperationException>(() => shell.Solver = SoftSolver.Newton);
             Assert.That(shell.Solver, Is.EqualTo(SoftSolver.Xpbd));
 
-            var cloth1 = SceneFile.Check("""
-                { "format": "fulcrum-scene/1", "softBodies": [ { "name": "flag", "solver": "newton",
-                  "mesh": { "type": "cloth", "size": [1, 1], "cells": [4, 4] }, "material": { "youngsModulus": 1e6, "poissonRatio": 0.3, "density": 400 } } ] }
-                """, out _);
+            var cloth1 = SceneFile.Check(@"{ ""format"": ""fulcrum-scene/1"", ""softBodies"": [ { ""name"": ""flag"", ""solver"": ""newton"",
+  ""mesh"": { ""type"": ""cloth"", ""size"": [1, 1], ""cells"": [4, 4] }, ""material"": { ""youngsModulus"": 1e6, ""poissonRatio"": 0.3, ""density"": 400 } } ] }", out _);
             Assert.That(cloth1.Select(x => x.ToString()), Has.Some.Contains("$.softBodies[0].solver"));
-            var unknown = SceneFile.Check("""
-                { "format": "fulcrum-scene/1", "softBodies": [ { "name": "b", "solver": "fem",
-                  "mesh": { "type": "box", "size": [1, 1, 1], "cells": [2, 2, 2] }, "material": { "youngsModulus": 1e6, "poissonRatio": 0.3, "density": 400 } } ] }
-                """, out _);
+            var unknown = SceneFile.Check(@"{ ""format"": ""fulcrum-scene/1"", ""softBodies"": [ { ""name"": ""b"", ""solver"": ""fem"",
+  ""mesh"": { ""type"": ""box"", ""size"": [1, 1, 1], ""cells"": [2, 2, 2] }, ""material"": { ""youngsModulus"": 1e6, ""poissonRatio"": 0.3, ""density"": 400 } } ] }", out _);
             Assert.That(unknown.Select(x => x.ToString()), Has.Some.Contains("$.softBodies[0].solver").And.Some.Contains("xpbd or newton"));
         }
 

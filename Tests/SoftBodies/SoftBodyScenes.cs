@@ -14,7 +14,7 @@ namespace Fulcrum.Tests.SoftBodies
         {
             var world = new World();
             BodyHandle ground = world.CreateBody(BodyDef.Static(new Vector3(0, groundY, 0)));
-            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(Vector3.UnitY, 0f)) with { Friction = friction });
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(Vector3.UnitY, 0f)).With((ref ShapeDef s) => s.Friction = friction));
             return world;
         }
 

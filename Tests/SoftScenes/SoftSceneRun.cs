@@ -58,14 +58,6 @@ namespace Fulcrum.Tests.SoftScenes
             return true;
         }
 
-        static string ScenesDir()
-        {
-            for (var d = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); d != null; d = d.Parent)
-            {
-                string candidate = Path.Combine(d.FullName, "Samples~", "Scenes");
-                if (Directory.Exists(candidate)) return candidate;
-            }
-            throw new AssertionException("Samples~/Scenes not found above the test directory");
-        }
+        static string ScenesDir() => PackageRoot.ScenesDirectory;
     }
 }

@@ -79,7 +79,7 @@ namespace Fulcrum.Tests.Validation
         [Test]
         public void A_teleport_beyond_the_world_bounds_is_refused_and_the_jointed_partner_stays()
         {
-            var w = new World(WorldSettings.Default with { Gravity = Vector3.Zero });
+            var w = new World(WorldSettings.Default.With((ref WorldSettings s) => s.Gravity = Vector3.Zero));
             BodyHandle a = Ball(w, Vector3.Zero);
             BodyHandle c = Ball(w, new Vector3(2, 0, 0));
             w.CreateJoint(JointDef.Ball(a, c, new Vector3(1, 0, 0), new Vector3(-1, 0, 0)));
@@ -109,18 +109,18 @@ namespace Fulcrum.Tests.Validation
             var w = new World();
             Assert.That(() => w.Step(1e6f), Throws.ArgumentException.With.Message.Contains("Limits.MinTimeStep/MaxTimeStep"));
             Assert.That(() => w.Step(1e-30f), Throws.ArgumentException.With.Message.Contains("dt"));
-            Assert.That(() => new World(WorldSettings.Default with { Substeps = 1_000_000_000 }), Throws.ArgumentException.With.Message.Contains("settings.Substeps"));
-            Assert.That(() => new World(WorldSettings.Default with { Iterations = 1_000_000_000 }), Throws.ArgumentException.With.Message.Contains("settings.Iterations"));
-            Assert.That(() => new World(WorldSettings.Default with { Threads = 100_000 }), Throws.ArgumentException.With.Message.Contains("settings.Threads"));
-            Assert.That(() => w.Settings = WorldSettings.Default with { Substeps = Limits.MaxSubsteps + 1 }, Throws.ArgumentException);
+            Assert.That(() => new World(WorldSettings.Default.With((ref WorldSettings s) => s.Substeps = 1_000_000_000)), Throws.ArgumentException.With.Message.Contains("settings.Substeps"));
+            Assert.That(() => new World(WorldSettings.Default.With((ref WorldSettings s) => s.Iterations = 1_000_000_000)), Throws.ArgumentException.With.Message.Contains("settings.Iterations"));
+            Assert.That(() => new World(WorldSettings.Default.With((ref WorldSettings s) => s.Threads = 100_000)), Throws.ArgumentException.With.Message.Contains("settings.Threads"));
+            Assert.That(() => w.Settings = WorldSettings.Default.With((ref WorldSettings s) => s.Substeps = Limits.MaxSubsteps + 1), Throws.ArgumentException);
             Assert.That(w.Settings.Substeps, Is.EqualTo(WorldSettings.Default.Substeps));
-            Assert.That(() => new World(WorldSettings.Default with { Substeps = Limits.MaxSubsteps, Threads = Limits.MaxThreads }), Throws.Nothing);
+            Assert.That(() => new World(WorldSettings.Default.With((ref WorldSettings s) => { s.Substeps = Limits.MaxSubsteps; s.Threads = Limits.MaxThreads; })), Throws.Nothing);
         }
 
         [Test]
         public void A_velocity_above_the_cap_is_clamped_to_the_cap_not_zeroed()
         {
-            var w = new World(WorldSettings.Default with { Gravity = Vector3.Zero });
+            var w = new World(WorldSettings.Default.With((ref WorldSettings s) => s.Gravity = Vector3.Zero));
             BodyHandle b = Ball(w, Vector3.Zero);
             w.GetBody(b).LinearVelocity = new Vector3(Limits.MaxInputSpeed, 0, 0);
             w.Step(1 / 60f);

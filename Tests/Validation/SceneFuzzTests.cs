@@ -23,15 +23,7 @@ namespace Fulcrum.Tests.Validation
             "-2147483649", "1e-45", "0", "-1", "1e13", "[1e20, 1e20, 1e20]", "[0, 0, 0, 0]", "{\"x\": 1}",
         };
 
-        static string ScenesDir()
-        {
-            for (var d = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); d != null; d = d.Parent)
-            {
-                string candidate = Path.Combine(d.FullName, "Samples~", "Scenes");
-                if (Directory.Exists(candidate)) return candidate;
-            }
-            throw new AssertionException("Samples~/Scenes not found above the test directory");
-        }
+        static string ScenesDir() => PackageRoot.ScenesDirectory;
 
         static int _built;
 
@@ -147,7 +139,8 @@ namespace Fulcrum.Tests.Validation
             sb.Append('1');
             for (int i = 0; i < 100_000; i++) sb.Append(close);
             IReadOnlyList<SceneError> errors = SceneFile.Check(sb.ToString(), out _);
-            Assert.That(errors, Has.Count.EqualTo(1));
+            // errors.Count, not Has.Count: NUnit 3.5/3.6 look Count up on the runtime type (an array here) and miss it.
+            Assert.That(errors.Count, Is.EqualTo(1));
             Assert.That(errors[0].Message, Does.Contain("nesting deeper than " + JsonParser.MaxDepth));
         }
     }
