@@ -14,7 +14,8 @@ namespace Fulcrum.Tests.Architecture
     /// <summary>
     /// Guards code moves that must not change results: every scene of Samples~/Scenes is stepped
     /// a fixed number of times and two hashes of the world are compared with the ones stored in
-    /// step-hashes.txt beside this file. "state" hashes the bytes of <see cref="World.SaveState"/>
+    /// Tests/Architecture/step-hashes.txt. The hashes are the .NET 10 build's: Unity's build has
+    /// no SIMD paths and rounds differently, so this test is .NET-only. "state" hashes the bytes of <see cref="World.SaveState"/>
     /// (everything a step reads, internal layouts included); "motion" hashes what a layout change
     /// leaves alone: body poses and velocities, contact manifolds with their impulses, joint
     /// reports (force, torque, error, broken) and the soft bodies' state. A change of a saved
