@@ -3,82 +3,16 @@
 // arrive, the view follows the newest frame and draws the tower, scrubbing back stops the
 // following and going to the last frame resumes it. Fails loudly (exit 1) on any problem.
 //
-// Environment: as scripts/e2e.mjs (FULCRUM, CHROMIUM, OUT) and SCENES, the folder of the
+// Environment: as e2e-common.mjs (FULCRUM, CHROMIUM, OUT) and SCENES, the folder of the
 // scene files (default ../Samples~/Scenes).
-import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync } from 'node:fs';
 import { resolve } from 'node:path';
-import { chromium } from 'playwright-core';
+import { BACKGROUND, check, distance, finish, launchBrowser, out, pixelAt, startRunner } from './e2e-common.mjs';
 
-const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
-const fulcrum = (process.env.FULCRUM ?? 'dotnet ../.artifacts/bin/Fulcrum.Runner/release/fulcrum.dll').split(' ');
 const scenes = resolve(process.env.SCENES ?? '../Samples~/Scenes');
-const out = resolve(process.env.OUT ?? 'test-output');
-mkdirSync(out, { recursive: true });
 
-let failures = 0;
-function check(ok, what) {
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures++;
-}
-
-if (!existsSync(chromiumPath)) {
-  console.error(`FAIL: no browser at ${chromiumPath} (apt-get install -y chromium)`);
-  process.exit(1);
-}
-
-// `fulcrum run --live` on a port; resolves with the page URL it prints before the run starts.
-// 3600 steps at real time (60 s) outlast the test; it is stopped at the end.
-function runLive(port) {
-  const args = ['run', resolve(scenes, 'tower-20.json'), '--steps', '3600', '--live', '--port', String(port)];
-  const child = spawn(fulcrum[0], [...fulcrum.slice(1), ...args], { stdio: ['ignore', 'pipe', 'pipe'] });
-  return new Promise((resolveUrl, reject) => {
-    let text = '';
-    const timer = setTimeout(() => reject(new Error(`fulcrum run --live printed no URL in 30 s:\n${text}`)), 30000);
-    const onData = chunk => {
-      text += chunk;
-      const m = /live: (http:\/\/\S+)/.exec(text);
-      if (m) { clearTimeout(timer); resolveUrl({ url: m[1], child }); }
-    };
-    child.stdout.on('data', onData);
-    child.stderr.on('data', onData);
-    child.on('exit', code => { clearTimeout(timer); reject(new Error(`fulcrum run --live exited ${code}:\n${text}`)); });
-  });
-}
-
-// The pixel (RGB 0-255) at a page point of a real screenshot, decoded by the browser (as in e2e.mjs).
-async function pixelAt(page, x, y) {
-  await page.evaluate(() => window.fulcrumViewer.render());
-  const png = (await page.screenshot()).toString('base64');
-  return page.evaluate(async ([png, x, y]) => {
-    const image = new Image();
-    image.src = 'data:image/png;base64,' + png;
-    await image.decode();
-    const copy = document.createElement('canvas');
-    copy.width = image.width; copy.height = image.height;
-    const g = copy.getContext('2d');
-    g.drawImage(image, 0, 0);
-    const scale = image.width / window.innerWidth;
-    return Array.from(g.getImageData(Math.round(x * scale), Math.round(y * scale), 1, 1).data.slice(0, 3));
-  }, [png, x, y]);
-}
-
-const BACKGROUND = [0x20, 0x24, 0x2a];
-const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-
-let server;
-for (let attempt = 0; !server; attempt++) {
-  try {
-    server = await runLive(20000 + Math.floor(Math.random() * 20000));
-  } catch (e) {
-    if (attempt >= 4 || !/in use/.test(e.message)) throw e;
-  }
-}
-const { url, child } = server;
-const browser = await chromium.launch({
-  executablePath: chromiumPath,
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
-});
+// `fulcrum run --live`: 3600 steps at real time (60 s) outlast the test; it is stopped at the end.
+const { url, child } = await startRunner(['run', resolve(scenes, 'tower-20.json'), '--steps', '3600', '--live'], /live: (http:\/\/\S+)/, 'fulcrum run --live');
+const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   const errors = [];
@@ -134,5 +68,4 @@ try {
   await browser.close();
   child.kill();
 }
-console.log(failures === 0 ? 'viewer live e2e: all checks passed' : `viewer live e2e: ${failures} check(s) FAILED`);
-process.exit(failures === 0 ? 0 : 1);
+finish('viewer live e2e');

@@ -3,85 +3,15 @@
 // back from the canvas, opens a soft scene through the file picker and checks that its strain
 // colours change under load. Fails loudly (exit 1) on any problem, including a missing browser.
 //
-// Environment: FULCRUM  command that runs the runner (default: dotnet ../.artifacts/bin/Fulcrum.Runner/release/fulcrum.dll)
-//              CHROMIUM path of the browser (default /usr/bin/chromium)
-//              DATA     folder holding tower.frec and jelly.frec (default test-data)
-//              OUT      folder for screenshots (default test-output)
-import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync } from 'node:fs';
+// Environment: as e2e-common.mjs, and DATA, the folder holding tower.frec and jelly.frec
+// (default test-data).
 import { resolve } from 'node:path';
-import { chromium } from 'playwright-core';
+import { BACKGROUND, check, distance, finish, launchBrowser, out, pixelAt, startRunner } from './e2e-common.mjs';
 
-const chromiumPath = process.env.CHROMIUM ?? '/usr/bin/chromium';
-const fulcrum = (process.env.FULCRUM ?? 'dotnet ../.artifacts/bin/Fulcrum.Runner/release/fulcrum.dll').split(' ');
 const data = resolve(process.env.DATA ?? 'test-data');
-const out = resolve(process.env.OUT ?? 'test-output');
-mkdirSync(out, { recursive: true });
 
-let failures = 0;
-function check(ok, what) {
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures++;
-}
-
-if (!existsSync(chromiumPath)) {
-  console.error(`FAIL: no browser at ${chromiumPath} (apt-get install -y chromium)`);
-  process.exit(1);
-}
-
-// `fulcrum view` on a free port; resolves with the URL it prints.
-function serve(file, port) {
-  const child = spawn(fulcrum[0], [...fulcrum.slice(1), 'view', file, '--port', String(port)], { stdio: ['ignore', 'pipe', 'pipe'] });
-  return new Promise((resolveUrl, reject) => {
-    let text = '';
-    const timer = setTimeout(() => reject(new Error(`fulcrum view printed no URL in 30 s:\n${text}`)), 30000);
-    const onData = chunk => {
-      text += chunk;
-      const m = /serving (http:\/\/\S+)/.exec(text);
-      if (m) { clearTimeout(timer); resolveUrl({ url: m[1], child }); }
-    };
-    child.stdout.on('data', onData);
-    child.stderr.on('data', onData);
-    child.on('exit', code => { clearTimeout(timer); reject(new Error(`fulcrum view exited ${code}:\n${text}`)); });
-  });
-}
-
-// The pixel (RGB 0-255) at a page point of a real Playwright screenshot of the page: the PNG
-// is decoded by the browser itself (an <img> drawn into a 2D canvas), so no decoder is needed here.
-async function pixelAt(page, x, y) {
-  await page.evaluate(() => window.fulcrumViewer.render());
-  const png = (await page.screenshot()).toString('base64');
-  return page.evaluate(async ([png, x, y]) => {
-    const image = new Image();
-    image.src = 'data:image/png;base64,' + png;
-    await image.decode();
-    const copy = document.createElement('canvas');
-    copy.width = image.width; copy.height = image.height;
-    const g = copy.getContext('2d');
-    g.drawImage(image, 0, 0);
-    const scale = image.width / window.innerWidth;
-    return Array.from(g.getImageData(Math.round(x * scale), Math.round(y * scale), 1, 1).data.slice(0, 3));
-  }, [png, x, y]);
-}
-
-const BACKGROUND = [0x20, 0x24, 0x2a];
-const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-
-// A random port; another one if that is taken (fulcrum view --port N takes exactly N).
-let server;
-for (let attempt = 0; !server; attempt++) {
-  try {
-    server = await serve(resolve(data, 'tower.frec'), 20000 + Math.floor(Math.random() * 20000));
-  } catch (e) {
-    if (attempt >= 4 || !/in use/.test(e.message)) throw e;
-  }
-}
-const { url, child } = server;
-const browser = await chromium.launch({
-  executablePath: chromiumPath,
-  // Software WebGL: the CI machine has no GPU.
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
-});
+const { url, child } = await startRunner(['view', resolve(data, 'tower.frec')], /serving (http:\/\/\S+)/, 'fulcrum view');
+const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   const errors = [];
@@ -185,5 +115,4 @@ try {
   await browser.close();
   child.kill();
 }
-console.log(failures === 0 ? 'viewer e2e: all checks passed' : `viewer e2e: ${failures} check(s) FAILED`);
-process.exit(failures === 0 ? 0 : 1);
+finish('viewer e2e');
