@@ -65,8 +65,7 @@ namespace Fulcrum.Unity
 
         void OnEnable()
         {
-            MeshFilter filter = GetComponent<MeshFilter>();
-            Mesh source = UnityMeshes.MeshOf(this, filter.sharedMesh);
+            Mesh source = UnityMeshes.MeshOf(this, null);
             N.Vector3[] rest = UnityMeshes.ScaledVertices(source, transform.lossyScale, this);
             int[] triangles = source.triangles;
             SoftMesh tets;
@@ -79,7 +78,7 @@ namespace Fulcrum.Unity
             _body.mesh = tets;
 
             // The MeshFilter's own instance: the shared asset is never written.
-            _renderMesh = filter.mesh;
+            _renderMesh = GetComponent<MeshFilter>().mesh;
             _renderMesh.MarkDynamic();
             int n = _embedding.VertexCount;
             _worldVertices = new N.Vector3[n];

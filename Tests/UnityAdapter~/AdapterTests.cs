@@ -266,7 +266,7 @@ namespace Fulcrum.Tests.UnityAdapter
             FulcrumSoftBody soft = jelly.AddComponent<FulcrumSoftBody>();
             Assert.That(soft.TetMesh, Is.Not.Null);
             Assert.That(soft.TetMesh!.TetrahedronCount, Is.GreaterThan(10));
-            Play(90);
+            Play(240);
 
             Mesh shown = jelly.GetComponent<MeshFilter>().mesh;
             Vector3[] local = shown.vertices;
@@ -278,8 +278,11 @@ namespace Fulcrum.Tests.UnityAdapter
                 lowest = Math.Min(lowest, world.y);
                 highest = Math.Max(highest, world.y);
             }
-            Assert.That(lowest, Is.EqualTo(0f).Within(0.03f), "resting on the ground's top");
-            Assert.That(highest - lowest, Is.EqualTo(0.4f).Within(0.04f), "a 1e5 Pa jelly of 0.4 m sags only a little under its weight");
+            TestContext.Out.WriteLine($"jelly at 4 s: lowest vertex {lowest * 1000:F1} mm, height {(highest - lowest) * 1000:F1} mm");
+            Assert.That(lowest, Is.EqualTo(0f).Within(0.005f), "resting on the ground's top (5 mm contact gap at most)");
+            // Under its own weight a 0.4 m, 1e5 Pa cube with free sides shortens rho g L^2 / 2E = 7.8 mm;
+            // this coarse mesh (6 cells, nu 0.45, its base gripped by friction) is stiffer: 2.2 mm.
+            Assert.That(highest - lowest, Is.InRange(0.392f, 0.3995f), "sagged a little under its weight, no more than the free-sided closed form");
             Assert.That(jelly.transform.position.y, Is.EqualTo(0.5f), "the transform stays; the vertices move");
             Assert.That(shown.normals.Length, Is.EqualTo(8));
             Assert.That(shown.normals[7].y, Is.GreaterThan(0.3f), "the top corner's normal points up and out");

@@ -21,10 +21,17 @@ namespace Fulcrum.Components
         {
             ThrowIfStepping(nameof(RaycastAll));
             QueryFilter filter = Filter(layerMask, queryTriggerInteraction);
-            int count = _world.RayCastAll(origin, direction, maxDistance, Span<RayHit>.Empty, filter);
-            if (count == 0) return Array.Empty<RaycastHit>();
+            // One cast into the scratch buffer; a second, larger one only when it overflowed.
+            int count = _world.RayCastAll(origin, direction, maxDistance, _rayScratch, filter);
+            if (count > _rayScratch.Length)
+            {
+                _rayScratch = new RayHit[count];
+                count = _world.RayCastAll(origin, direction, maxDistance, _rayScratch, filter);
+            }
             var results = new RaycastHit[count];
-            int n = RaycastNonAlloc(origin, direction, results, maxDistance, layerMask, queryTriggerInteraction);
+            int n = 0;
+            for (int k = 0; k < count; k++)
+                if (ToHit(_rayScratch[k].Shape, _rayScratch[k].Point, _rayScratch[k].Normal, _rayScratch[k].Distance, out RaycastHit h)) results[n++] = h;
             if (n < count) Array.Resize(ref results, n);
             return results;
         }

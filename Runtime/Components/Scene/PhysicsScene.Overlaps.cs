@@ -123,10 +123,21 @@ namespace Fulcrum.Components
         Collider[] OverlapAll(in ShapeGeometry g, in Pose pose, int layerMask, QueryTriggerInteraction q, string query)
         {
             ThrowIfStepping(query);
-            int count = _world.Overlap(g, pose, Span<ShapeHandle>.Empty, Filter(layerMask, q));
-            if (count == 0) return Array.Empty<Collider>();
+            QueryFilter filter = Filter(layerMask, q);
+            // One query into the scratch buffer; a second, larger one only when it overflowed.
+            int count = _world.Overlap(g, pose, _overlapScratch, filter);
+            if (count > _overlapScratch.Length)
+            {
+                _overlapScratch = new ShapeHandle[count];
+                count = _world.Overlap(g, pose, _overlapScratch, filter);
+            }
             var results = new Collider[count];
-            int n = Overlap(g, pose, results, layerMask, q, query);
+            int n = 0;
+            for (int k = 0; k < count; k++)
+            {
+                Collider? c = GetCollider(_overlapScratch[k]);
+                if (c != null) results[n++] = c;
+            }
             if (n < count) Array.Resize(ref results, n);
             return results;
         }

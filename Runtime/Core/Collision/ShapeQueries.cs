@@ -22,12 +22,9 @@ namespace Fulcrum.Collision
         public static bool RayCast(in ShapeGeometry shape, in Pose pose, Vector3 origin, Vector3 direction, float maxDistance,
             out float distance, out Vector3 normal)
         {
-            CheckPose(pose);
-            if (!Validate.IsFinite(origin)) throw new ArgumentException($"origin must be finite, got {origin}.", nameof(origin));
-            float length = direction.Length();
-            if (!(length > 1e-12f) || !float.IsFinite(length)) throw new ArgumentException($"direction must be finite and non-zero, got {direction}.", nameof(direction));
-            if (float.IsNaN(maxDistance) || maxDistance < 0) throw new ArgumentException($"maxDistance must be >= 0, got {maxDistance}.", nameof(maxDistance));
-            return RayCaster.Cast(shape, pose, origin, direction / length, maxDistance, out distance, out normal);
+            World.CheckQueryShape(shape, pose, false);
+            Vector3 dir = World.CheckRay(origin, direction, ref maxDistance);
+            return RayCaster.Cast(shape, pose, origin, dir, maxDistance, out distance, out normal);
         }
 
         /// <summary>
@@ -38,7 +35,7 @@ namespace Fulcrum.Collision
         /// </summary>
         public static Vector3 ClosestPoint(in ShapeGeometry shape, in Pose pose, Vector3 point)
         {
-            CheckPose(pose);
+            World.CheckQueryShape(shape, pose, false);
             if (!Validate.IsFinite(point)) throw new ArgumentException($"point must be finite, got {point}.", nameof(point));
             if (shape.Type == ShapeType.TriangleMesh)
                 throw new ArgumentException("ClosestPoint needs a convex shape or a plane; a triangle mesh has no inside.", nameof(shape));
@@ -65,8 +62,8 @@ namespace Fulcrum.Collision
         public static bool Penetration(in ShapeGeometry a, in Pose poseA, in ShapeGeometry b, in Pose poseB,
             out Vector3 direction, out float distance)
         {
-            CheckPose(poseA);
-            CheckPose(poseB);
+            World.CheckQueryShape(a, poseA, false);
+            World.CheckQueryShape(b, poseB, false);
             direction = default;
             distance = 0;
             if (a.Type == ShapeType.TriangleMesh || b.Type == ShapeType.TriangleMesh)
@@ -115,14 +112,6 @@ namespace Fulcrum.Collision
             direction = sign * n;
             distance = depth > 0 ? depth : 0;
             return depth > 0;
-        }
-
-        static void CheckPose(in Pose pose)
-        {
-            if (!Validate.IsFinite(pose.Position)) throw new ArgumentException($"pose position must be finite, got {pose.Position}.", nameof(pose));
-            Quaternion q = pose.Rotation;
-            if (!(float.IsFinite(q.X) && float.IsFinite(q.Y) && float.IsFinite(q.Z) && float.IsFinite(q.W)) || MathF.Abs(q.Length() - 1f) > 1e-3f)
-                throw new ArgumentException($"pose rotation must be a unit quaternion, got {q}.", nameof(pose));
         }
     }
 }

@@ -145,7 +145,7 @@ namespace Fulcrum
             _broadPhase.MovingTree.Query(q.SweptBounds, ref q);
         }
 
-        static Vector3 CheckRay(Vector3 origin, Vector3 direction, ref float maxDistance)
+        internal static Vector3 CheckRay(Vector3 origin, Vector3 direction, ref float maxDistance)
         {
             Validate.Finite(origin, "origin");
             float len = direction.Length();
@@ -158,7 +158,7 @@ namespace Fulcrum
             return direction / len;
         }
 
-        static void CheckQueryShape(in ShapeGeometry shape, in Pose pose, bool convexOnly)
+        internal static void CheckQueryShape(in ShapeGeometry shape, in Pose pose, bool convexOnly)
         {
             Validate.Finite(pose.Position, "pose.Position");
             Validate.Rotation(pose.Rotation, "pose.Rotation");
