@@ -5,7 +5,8 @@ namespace Fulcrum.Runner;
 /// <summary>
 /// <c>fulcrum fuzz [--count N] [--seed S] [--steps K]</c>: runs N seeded hostile worlds
 /// (<see cref="WorldFuzz"/>) from seed S, K steps each, and prints one line per world that
-/// diverged or flung a body farther than its speeds allow, then a summary. Exits 3 when any did.
+/// diverged, flung a body farther than its speeds allow, or gained more mechanical energy than
+/// its motors and correction passes may add, then a summary. Exits 3 when any did.
 /// </summary>
 static class FuzzCommand
 {
@@ -16,7 +17,7 @@ static class FuzzCommand
         int count = a.Int("--count", 1) ?? 1000;
         int seed = a.Int("--seed", 0) ?? 0;
         int steps = a.Int("--steps", 1) ?? 180;
-        int diverged = 0, escaped = 0, refused = 0;
+        int diverged = 0, escaped = 0, gained = 0, refused = 0;
         for (int s = seed; s < seed + count; s++)
         {
             WorldFuzz.Outcome o = WorldFuzz.Run(s, steps);
@@ -31,8 +32,13 @@ static class FuzzCommand
                 escaped++;
                 output.WriteLine("escaped: " + o.Escape);
             }
+            else if (o.EnergyGain != null)
+            {
+                gained++;
+                output.WriteLine("energy: " + o.EnergyGain);
+            }
         }
-        output.WriteLine($"fuzz: {count} worlds from seed {seed}, {steps} steps each: {refused} refused, {diverged} diverged, {escaped} escaped");
-        return diverged + escaped > 0 ? Cli.ExitDiverged : Cli.ExitOk;
+        output.WriteLine($"fuzz: {count} worlds from seed {seed}, {steps} steps each: {refused} refused, {diverged} diverged, {escaped} escaped, {gained} gained energy");
+        return diverged + escaped + gained > 0 ? Cli.ExitDiverged : Cli.ExitOk;
     }
 }

@@ -21,8 +21,11 @@ namespace Fulcrum.Dynamics
             BodyStorage bodies = context.Storage;
             Integrator.IntegrateVelocities(bodies, context.BodySlot, 1, context.BodyCount - 1, s.Gravity, dt, s.MaxLinearSpeed);
             context.Prepare(islands, wide: true, keepRows: true);
+            context.BuildGuard(islands);
+            context.Guard.Begin(context);
             context.WarmStart();
             for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: false);
+            context.EndGuard(islands);
             context.StoreVelocities();
             // The speed cap holds for what the constraints added too (a contradictory joint loop
             // flung bodies at 1e5 m/s in WorldFuzz).
@@ -37,7 +40,7 @@ namespace Fulcrum.Dynamics
             {
                 context.LoadDeltas();
                 for (int i = 0; i < s.PositionIterations; i++) context.SolvePositions();
-                context.StorePositions();
+                context.StorePositions(turnVelocities: true);
             }
             return context.End();
         }

@@ -49,6 +49,7 @@ namespace Fulcrum.Dynamics
                 // Joints are projected fully in each position pass (Box2D v2.x); a fraction, as
                 // for contacts, converges far too slowly along chains with large mass ratios.
                 Beta = 1f,
+                MaxCorrection = set.MaxJointCorrectionSpeed * _dt / Math.Max(1, set.PositionIterations),
             };
 
             // Colour every constraint in a fixed order: contacts, then joints.
@@ -138,6 +139,12 @@ namespace Fulcrum.Dynamics
 #endif
             SplitWide(wide && WideContacts);
             float warmJoints = set.WarmStarting ? 1f : 0f;
+            // The most any joint can need per (sub)step: turning every body of the step around
+            // at the speed cap (see JointSolver.Begin).
+            float mass = 0;
+            for (int k = 1; k < BodyCount; k++)
+                if (Bodies[k].IsDynamic != 0) mass += 1f / Bodies[k].InverseMass;
+            float maxJointImpulse = 2f * set.MaxLinearSpeed * mass;
             for (int k = 0; k < nj; k++)
             {
                 int slot = islands.Joints[k];
@@ -146,7 +153,7 @@ namespace Fulcrum.Dynamics
                 ref JointData j = ref _joints.Data[slot];
                 j.SolverA = IndexOf(j.BodyA);
                 j.SolverB = IndexOf(j.BodyB);
-                JointSolver.Begin(ref j, _storage, _h, warmJoints);
+                JointSolver.Begin(ref j, _storage, _h, warmJoints, maxJointImpulse);
                 RunJoint(ref j, JointSolver.Pass.Prepare);
             }
         }

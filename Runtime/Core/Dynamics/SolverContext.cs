@@ -83,6 +83,18 @@ namespace Fulcrum.Dynamics
         /// <summary>Threads for the colour batches; null runs everything on the caller's thread.</summary>
         public WorkerPool? Pool;
 
+        /// <summary>Keeps the velocity solve from creating kinetic energy (see <see cref="EnergyGuard"/>).</summary>
+        public readonly EnergyGuard Guard = new EnergyGuard();
+
+        /// <summary>Groups the prepared bodies into islands for <see cref="Guard"/>.</summary>
+        public void BuildGuard(IslandBuilder islands)
+        {
+            Guard.Build(this, islands, _manifolds, _joints);
+        }
+
+        /// <summary>Closes the <see cref="Guard"/>'s window: scales back what created energy.</summary>
+        public void EndGuard(IslandBuilder islands) => Guard.End(this, islands, _joints);
+
         public SolverContext()
         {
             _colorJob = new ColorJob(this);
@@ -160,6 +172,7 @@ namespace Fulcrum.Dynamics
             if (JointOrder.Length < joints) JointOrder = new int[joints];
             if (_scalarContacts.Length < manifolds) _scalarContacts = new int[manifolds];
             _shock.Reserve(b, manifolds);
+            Guard.Reserve(b);
 #if NET
             if (_rejected.Length < manifolds) _rejected = new int[manifolds];
             // Each colour's last group may be padded: at most one group per colour more.
@@ -249,8 +262,16 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        /// <summary>Moves every solver body to its start pose plus its deltas; refreshes origin and world inertia.</summary>
-        public void StorePositions()
+        /// <summary>
+        /// Moves every solver body to its start pose plus its deltas; refreshes origin and world
+        /// inertia. With <paramref name="turnVelocities"/> (after PGS's position passes) each
+        /// dynamic body's angular velocity turns with the rotation those passes added, so the
+        /// body keeps its spin in its own frame: a position correction may not change the
+        /// rotational kinetic energy (with the world angular velocity held while the world
+        /// inertia turned, a thin body re-oriented by a joint correction gained energy every
+        /// step).
+        /// </summary>
+        public void StorePositions(bool turnVelocities = false)
         {
             BodyStorage s = _storage;
             for (int k = 1; k < BodyCount; k++)
@@ -258,7 +279,13 @@ namespace Fulcrum.Dynamics
                 int i = BodySlot[k];
                 ref SolverBody body = ref Bodies[k];
                 s.Center[i] = _startCenter[k] + body.DeltaPosition;
-                s.Rotation[i] = Quaternion.Normalize(body.DeltaRotation * _startRotation[k]);
+                Quaternion rotation = Quaternion.Normalize(body.DeltaRotation * _startRotation[k]);
+                if (turnVelocities && body.IsDynamic != 0)
+                {
+                    Quaternion turn = rotation * Quaternion.Conjugate(s.Rotation[i]);
+                    s.AngularVelocity[i] = Vector3.Transform(s.AngularVelocity[i], turn);
+                }
+                s.Rotation[i] = rotation;
                 s.SyncOriginFromCenter(i);
                 s.UpdateWorldInertia(i);
             }

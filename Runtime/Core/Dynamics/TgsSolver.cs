@@ -21,15 +21,18 @@ namespace Fulcrum.Dynamics
             ref readonly WorldSettings s = ref context.Settings;
             context.Prepare(islands, wide: true);
             if (s.ShockPropagation) context.PrepareShock(islands);
+            context.BuildGuard(islands);
             for (int sub = 0; sub < s.Substeps; sub++)
             {
                 context.IntegrateVelocities();
                 if (context.HasRestitution) context.RefreshApproach();
+                context.Guard.Begin(context);
                 context.WarmStart();
                 for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true);
                 if (s.ShockPropagation) context.Shock();
                 context.IntegratePositions();
                 for (int i = 0; i < s.RelaxIterations; i++) context.Solve(useBias: false);
+                context.EndGuard(islands);
                 // Restitution for the impacts of this substep. The points of a face contact
                 // share one body: the bounce needs the same number of Gauss-Seidel passes as any
                 // other row to reach -e v0 at every point.

@@ -100,11 +100,13 @@ namespace Fulcrum.Dynamics
 
         /// <summary>
         /// Non-linear Gauss-Seidel: moves the bodies to remove the fraction
-        /// <paramref name="beta"/> of the error <paramref name="C"/> along the row.
+        /// <paramref name="beta"/> of the error <paramref name="C"/> along the row, capped at
+        /// <paramref name="maxC"/> (m for a linear row, rad for an angular one).
         /// </summary>
-        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, float C, float beta)
+        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, float C, float beta, float maxC)
         {
             if (C == 0 || EffectiveMass == 0) return;
+            C = Math.Clamp(C, -maxC, maxC);
             float lambda = -beta * C * EffectiveMass;
             a.DeltaPosition -= (a.InverseMass * lambda) * Linear;
             a.Rotate(-(a.InverseInertia * (lambda * AngularA)));

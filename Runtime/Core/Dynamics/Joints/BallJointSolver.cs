@@ -44,8 +44,8 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta) =>
-            j.Parts.Ball.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
+        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC) =>
+            j.Parts.Ball.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta, maxC);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p) =>

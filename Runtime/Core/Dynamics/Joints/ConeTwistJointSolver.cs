@@ -91,16 +91,16 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
+        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC)
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
-            if (_cone) k.Cone.SolvePosition(ref a, ref b, MathF.Min(j.ConeAngle - _swing, 0), beta);
+            if (_cone) k.Cone.SolvePosition(ref a, ref b, MathF.Min(j.ConeAngle - _swing, 0), beta, maxC);
             if (_limits)
             {
-                k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_twist + j.TwistAngle, 0), beta);
-                k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.TwistAngle - _twist, 0), beta);
+                k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_twist + j.TwistAngle, 0), beta, maxC);
+                k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.TwistAngle - _twist, 0), beta, maxC);
             }
-            k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
+            k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta, maxC);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

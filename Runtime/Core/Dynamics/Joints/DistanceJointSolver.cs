@@ -72,12 +72,12 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
+        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC)
         {
             ref DistanceJointParts k = ref j.Parts.Distance;
-            if (_rigid) k.Length.SolvePosition(ref a, ref b, _length - j.MinLength, beta);
-            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_length - j.MinLength, 0), beta);
-            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.MaxLength - _length, 0), beta);
+            if (_rigid) k.Length.SolvePosition(ref a, ref b, _length - j.MinLength, beta, maxC);
+            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_length - j.MinLength, 0), beta, maxC);
+            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.MaxLength - _length, 0), beta, maxC);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

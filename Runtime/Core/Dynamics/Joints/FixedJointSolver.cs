@@ -50,11 +50,11 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
+        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC)
         {
             ref FixedJointParts k = ref j.Parts.Fixed;
-            k.Lock.SolvePosition(ref a, ref b, _angle, beta);
-            k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
+            k.Lock.SolvePosition(ref a, ref b, _angle, beta, maxC);
+            k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta, maxC);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -121,14 +121,14 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
+        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC)
         {
             ref HingeJointParts k = ref j.Parts.Hinge;
-            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_angle - j.Lower, 0), beta);
-            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.Upper - _angle, 0), beta);
-            if (_swing) k.Swing.SolvePosition(ref a, ref b, _swingAngle, beta);
-            else k.Rotation.SolvePosition(ref a, ref b, _u1, _u2, _e1, _e2, beta);
-            k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta);
+            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_angle - j.Lower, 0), beta, maxC);
+            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.Upper - _angle, 0), beta, maxC);
+            if (_swing) k.Swing.SolvePosition(ref a, ref b, _swingAngle, beta, maxC);
+            else k.Rotation.SolvePosition(ref a, ref b, _u1, _u2, _e1, _e2, beta, maxC);
+            k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta, maxC);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

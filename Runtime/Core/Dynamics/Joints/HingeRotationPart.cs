@@ -87,9 +87,15 @@ namespace Fulcrum.Dynamics
             Apply(ref a, ref b, u1, u2, d1, d2);
         }
 
-        /// <summary>Non-linear Gauss-Seidel on the two errors.</summary>
-        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, Vector3 u1, Vector3 u2, float c1, float c2, float beta)
+        /// <summary>Non-linear Gauss-Seidel on the two errors, their length capped at <paramref name="maxC"/> rad.</summary>
+        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, Vector3 u1, Vector3 u2, float c1, float c2, float beta, float maxC)
         {
+            float length = MathF.Sqrt(c1 * c1 + c2 * c2);
+            if (length > maxC)
+            {
+                c1 *= maxC / length;
+                c2 *= maxC / length;
+            }
             float l1 = -beta * (M11 * c1 + M12 * c2);
             float l2 = -beta * (M12 * c1 + M22 * c2);
             Vector3 l = l1 * u1 + l2 * u2;

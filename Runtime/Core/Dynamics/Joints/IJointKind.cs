@@ -19,7 +19,7 @@ namespace Fulcrum.Dynamics
         void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias);
 
         /// <summary>One position iteration (non-linear Gauss-Seidel) removing the fraction <paramref name="beta"/> of the error.</summary>
-        void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta);
+        void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC);
 
         /// <summary>Writes force, torque, stress and position error (<see cref="JointSolver.Report"/>).</summary>
         void Report(ref JointData j, in JointGeometry g, in JointSolver.StepParameters p);

@@ -38,13 +38,26 @@ namespace Fulcrum.Dynamics
             public float H, InvH;
             /// <summary>Baumgarte factor of the position passes.</summary>
             public float Beta;
+            /// <summary>
+            /// The largest error one position pass removes from one row, m or rad: the joint
+            /// correction speed times the step, shared among the passes, so PGS pulls a joint
+            /// created far from its target together no faster than TGS's bias does.
+            /// </summary>
+            public float MaxCorrection;
         }
 
         /// <summary>
         /// Fills the step geometry of a joint (arms, frames, centre offset) from the bodies'
         /// poses at the start of the step and scales its impulses by <paramref name="warmScale"/>.
         /// </summary>
-        public static void Begin(ref JointData j, BodyStorage bodies, float h, float warmScale)
+        /// <remarks>
+        /// A joint whose last impulse exceeds <paramref name="maxImpulse"/> (N s; per metre of
+        /// arm for the angular part) is not warm started: no real joint needs more than it takes
+        /// to turn every body of the step around at the speed cap, and only rows that contradict
+        /// each other accumulate that much (their impulses drift along directions whose effects
+        /// cancel, grow every step and overflowed to infinity in a fuzzed world).
+        /// </remarks>
+        public static void Begin(ref JointData j, BodyStorage bodies, float h, float warmScale, float maxImpulse)
         {
             Pose(bodies, j.BodyA, out Vector3 originA, out Quaternion qA, out Vector3 cA);
             Pose(bodies, j.BodyB, out Vector3 originB, out Quaternion qB, out Vector3 cB);
@@ -55,6 +68,9 @@ namespace Fulcrum.Dynamics
             j.FrameB = qB * j.LocalFrameB;
             // The parts hold impulses per (sub)step: rescale when the (sub)step changed.
             float scale = warmScale * (j.StepDt > 0 ? h / j.StepDt : 1f);
+            float linear = j.Force.Length() * j.StepDt, angular = j.Torque.Length() * j.StepDt;
+            float reach = 1f + j.ArmA.Length() + j.ArmB.Length();
+            if (!(linear <= maxImpulse) || !(angular <= maxImpulse * reach)) scale = 0f;
             switch (j.Kind)
             {
                 case JointKind.Ball: j.Parts.Ball.Scale(scale); break;
@@ -110,12 +126,19 @@ namespace Fulcrum.Dynamics
                 case Pass.WarmStart: kind.WarmStart(ref j, ref a, ref b, g); break;
                 case Pass.Solve:
                 case Pass.Relax: kind.Solve(ref j, ref a, ref b, g, p, pass == Pass.Solve); break;
-                case Pass.Position: kind.SolvePosition(ref j, ref a, ref b, g, p.Beta); break;
+                case Pass.Position: kind.SolvePosition(ref j, ref a, ref b, g, p.Beta, p.MaxCorrection); break;
                 default: kind.Report(ref j, g, p); break;
             }
         }
 
         // ---- shared rows and measures -----------------------------------------------------
+
+        /// <summary><paramref name="c"/> with its length capped at <paramref name="max"/>.</summary>
+        public static Vector3 Cap(Vector3 c, float max)
+        {
+            float length = c.Length();
+            return length > max ? c * (max / length) : c;
+        }
 
         // Effective masses follow the arms and axes as they turn within the step: a mass kept
         // from the start of the step is wrong in direction once an arm has turned, and where

@@ -47,9 +47,13 @@ namespace Fulcrum.Dynamics
             Apply(ref a, ref b, rA, rB, impulse);
         }
 
-        /// <summary>Non-linear Gauss-Seidel: moves the bodies to remove the fraction <paramref name="beta"/> of the gap <paramref name="C"/>.</summary>
-        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, Vector3 rA, Vector3 rB, Vector3 C, float beta)
+        /// <summary>
+        /// Non-linear Gauss-Seidel: moves the bodies to remove the fraction <paramref name="beta"/>
+        /// of the gap <paramref name="C"/>, its length capped at <paramref name="maxC"/>.
+        /// </summary>
+        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, Vector3 rA, Vector3 rB, Vector3 C, float beta, float maxC)
         {
+            C = JointSolver.Cap(C, maxC);
             Vector3 p = -(EffectiveMass * (beta * C));
             a.ApplyPositionImpulse(rA, -p);
             b.ApplyPositionImpulse(rB, p);

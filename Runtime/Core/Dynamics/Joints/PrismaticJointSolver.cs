@@ -90,14 +90,14 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta)
+        public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC)
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
-            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_x - j.Lower, 0), beta);
-            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.Upper - _x, 0), beta);
-            k.Lock.SolvePosition(ref a, ref b, _angle, beta);
-            k.Perp1.SolvePosition(ref a, ref b, _c1, beta);
-            k.Perp2.SolvePosition(ref a, ref b, _c2, beta);
+            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_x - j.Lower, 0), beta, maxC);
+            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.Upper - _x, 0), beta, maxC);
+            k.Lock.SolvePosition(ref a, ref b, _angle, beta, maxC);
+            k.Perp1.SolvePosition(ref a, ref b, _c1, beta, maxC);
+            k.Perp2.SolvePosition(ref a, ref b, _c2, beta, maxC);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -44,9 +44,10 @@ namespace Fulcrum.Dynamics
             Apply(ref a, ref b, impulse);
         }
 
-        /// <summary>Non-linear Gauss-Seidel: turns the bodies to remove the fraction <paramref name="beta"/> of the error.</summary>
-        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, Vector3 C, float beta)
+        /// <summary>Non-linear Gauss-Seidel: turns the bodies to remove the fraction <paramref name="beta"/> of the error, its angle capped at <paramref name="maxC"/> rad.</summary>
+        public readonly void SolvePosition(ref SolverBody a, ref SolverBody b, Vector3 C, float beta, float maxC)
         {
+            C = JointSolver.Cap(C, maxC);
             Vector3 l = -(EffectiveMass * (beta * C));
             a.Rotate(-(a.InverseInertia * l));
             b.Rotate(b.InverseInertia * l);

@@ -1,0 +1,232 @@
+using System;
+using System.Numerics;
+using Fulcrum.Collision;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Dynamics
+{
+    /// <summary>
+    /// Keeps the constraint solve from creating kinetic energy. Passive constraints (contacts,
+    /// joints without motors or springs, their limits and friction) can only redirect or remove
+    /// kinetic energy: the exact velocity projection is dissipative. A Gauss-Seidel solve of
+    /// joints that contradict each other is not: in 3D the bias of a persistent error leaks into
+    /// the free directions as the bodies turn within the (sub)step (TGS), and redundant rows let
+    /// warm-started impulses drift along directions whose effects cancel until the bodies turn
+    /// (PGS). Both pumped bodies to hundreds of metres per second in the fuzzed worlds.
+    /// <para>
+    /// So each group of bodies connected through constraints (a solver island) is checked over
+    /// the velocity solve: with v0 the velocities before it (gravity and forces already applied)
+    /// and dv the change the constraints made, the kinetic energy K(s) = K(v0 + s dv) is
+    /// quadratic in s. When K(1) exceeds K(0), the change is scaled by the largest s in [0, 1]
+    /// with K(s) &lt;= K(0): s = -2 (v0 . M dv) / (dv . M dv). Scaling every constraint impulse of
+    /// the island by the same factor keeps them equal and opposite (momentum is exchanged as
+    /// before, only less of it) and leaves a solve that did not create energy untouched, so
+    /// ordinary scenes step exactly as without the guard. A motor's work (its impulse times its
+    /// target speed) is allowed for; islands with a spring or a kinematic body are skipped
+    /// (those add energy by design), and so are islands without joints (contacts cannot
+    /// contradict each other that way, and the unconverged rows under a heavy body resting on
+    /// a light one keep a little energy that must not be taken from the heavy body's support).
+    /// The slack (0.01 J per kg of the island and a relative 1e-5 per (sub)step) keeps the
+    /// guard off the ordinary Gauss-Seidel error of chains holding heavy loads.
+    /// </para>
+    /// </summary>
+    internal sealed class EnergyGuard
+    {
+        // Relative and absolute slack (J per kg) before the guard acts: rounding in a solve that
+        // did not really create energy must not change the motion.
+        const float RelativeSlack = 1e-5f;
+        const float SlackPerKilogram = 1e-2f;
+
+        int[] _parent = new int[16];
+        bool[] _exempt = new bool[16];
+        bool[] _jointed = new bool[16];
+        Vector3[] _linear = new Vector3[16];
+        Vector3[] _angular = new Vector3[16];
+        Mat3[] _inertia = new Mat3[16];
+        // Per island root: sums of v0.M.v0, v0.M.dv, dv.M.dv and the mass.
+        double[] _k00 = new double[16], _k01 = new double[16], _k11 = new double[16], _mass = new double[16], _work = new double[16];
+        float[] _scale = new float[16];
+        int _count;
+        bool _any;
+
+        /// <summary>Number of times the guard scaled an island's constraint impulses since the world was created.</summary>
+        public long Activations;
+
+        /// <summary>
+        /// Groups the solver's bodies into islands through the prepared contacts and joints and
+        /// marks the islands that may gain energy by design. Call after <see cref="SolverContext.Prepare"/>.
+        /// </summary>
+        public void Build(SolverContext c, IslandBuilder islands, ContactManifold[] manifolds, JointStorage joints)
+        {
+            int n = c.BodyCount;
+            _count = n;
+            _any = false;
+            if (islands.JointCount == 0) return; // contact-only islands are left alone (below)
+            if (_parent.Length < n) Reserve(Math.Max(16, 2 * n));
+            for (int k = 0; k < n; k++)
+            {
+                _parent[k] = k;
+                _exempt[k] = false;
+                _jointed[k] = false;
+            }
+            for (int i = 0; i < islands.ManifoldCount; i++)
+            {
+                ref ContactManifold m = ref manifolds[islands.Manifolds[i]];
+                Join(c, c.IndexOf(m.BodyA), c.IndexOf(m.BodyB), false);
+            }
+            for (int i = 0; i < islands.JointCount; i++)
+            {
+                ref JointData j = ref joints.Data[islands.Joints[i]];
+                bool active = j.SpringHertz > 0;
+                int a = c.IndexOf(j.BodyA), b = c.IndexOf(j.BodyB);
+                Join(c, a, b, active);
+                _jointed[a] = _jointed[b] = true;
+            }
+            // Flags live on the roots. Islands without joints are left alone: contacts cannot
+            // contradict each other the way joints do, and a heavy body resting on a light one
+            // leaves the light one's unconverged rows a little energy that must not be taken
+            // out of the heavy one's support.
+            for (int k = 1; k < n; k++)
+            {
+                if (_exempt[k]) _exempt[Find(k)] = true;
+                if (_jointed[k]) _jointed[Find(k)] = true;
+            }
+            for (int k = 1; k < n; k++)
+                if (!_jointed[Find(k)]) _exempt[Find(k)] = true;
+            for (int k = 1; k < n; k++)
+            {
+                ref SolverBody b = ref c.Bodies[k];
+                if (b.IsDynamic == 0) continue;
+                _inertia[k] = b.InverseInertia.Inverse();
+                if (!_exempt[Find(k)]) _any = true;
+            }
+        }
+
+        /// <summary>Sizes the per-body arrays for <paramref name="bodies"/> solver bodies, so steps within that count allocate nothing.</summary>
+        public void Reserve(int bodies)
+        {
+            if (_parent.Length >= bodies) return;
+            _parent = new int[bodies];
+            _exempt = new bool[bodies];
+            _jointed = new bool[bodies];
+            _linear = new Vector3[bodies];
+            _angular = new Vector3[bodies];
+            _inertia = new Mat3[bodies];
+            _k00 = new double[bodies];
+            _k01 = new double[bodies];
+            _k11 = new double[bodies];
+            _mass = new double[bodies];
+            _work = new double[bodies];
+            _scale = new float[bodies];
+        }
+
+        /// <summary>Records the velocities before the velocity solve.</summary>
+        /// <remarks>Motors are not exempt: their work this (sub)step, at most |impulse| x |target speed|, is added to the island's allowance in <see cref="End"/>.</remarks>
+        public void Begin(SolverContext c)
+        {
+            if (!_any) return;
+            SolverBody[] bodies = c.Bodies;
+            for (int k = 1; k < _count; k++)
+            {
+                _linear[k] = bodies[k].LinearVelocity;
+                _angular[k] = bodies[k].AngularVelocity;
+            }
+        }
+
+        /// <summary>
+        /// Scales the velocity change of every island whose kinetic energy the solve raised, so
+        /// that it ends no higher than it began.
+        /// </summary>
+        public void End(SolverContext c, IslandBuilder islands, JointStorage joints)
+        {
+            if (!_any) return;
+            SolverBody[] bodies = c.Bodies;
+            for (int k = 1; k < _count; k++)
+            {
+                _k00[k] = _k01[k] = _k11[k] = _mass[k] = _work[k] = 0;
+                _scale[k] = 1f;
+            }
+            // A motor may add at most its impulse times its target speed (it pushes towards
+            // that speed and brakes beyond it).
+            for (int i = 0; i < islands.JointCount; i++)
+            {
+                ref JointData j = ref joints.Data[islands.Joints[i]];
+                if (j.MaxMotorForce <= 0) continue;
+                float impulse = j.Kind == JointKind.Hinge ? j.Parts.Hinge.Motor.Impulse
+                              : j.Kind == JointKind.Prismatic ? j.Parts.Prismatic.Motor.Impulse : 0f;
+                int a = c.IndexOf(j.BodyA), b = c.IndexOf(j.BodyB);
+                int r = Find(a != 0 ? a : b);
+                if (r != 0) _work[r] += Math.Abs(impulse) * Math.Abs(j.MotorSpeed);
+            }
+            for (int k = 1; k < _count; k++)
+            {
+                ref SolverBody b = ref bodies[k];
+                if (b.IsDynamic == 0) continue;
+                int r = Find(k);
+                if (_exempt[r]) continue;
+                float m = 1f / b.InverseMass;
+                Vector3 v0 = _linear[k], w0 = _angular[k];
+                Vector3 dv = b.LinearVelocity - v0, dw = b.AngularVelocity - w0;
+                Vector3 iw0 = _inertia[k] * w0, idw = _inertia[k] * dw;
+                _k00[r] += m * Vector3.Dot(v0, v0) + Vector3.Dot(w0, iw0);
+                _k01[r] += m * Vector3.Dot(v0, dv) + Vector3.Dot(w0, idw);
+                _k11[r] += m * Vector3.Dot(dv, dv) + Vector3.Dot(dw, idw);
+                _mass[r] += m;
+            }
+            bool scaled = false;
+            for (int r = 1; r < _count; r++)
+            {
+                if (_parent[r] != r || _exempt[r] || _k11[r] <= 0) continue;
+                // 2 K(1) - 2 K(0) = 2 v0.M.dv + dv.M.dv
+                double rise = 2 * _k01[r] + _k11[r];
+                double slack = RelativeSlack * _k00[r] + SlackPerKilogram * _mass[r] + _work[r];
+                if (!(rise > 2 * slack)) continue; // also skips a NaN sum (a singular inertia)
+                // Largest s with 2 s v0.M.dv + s^2 dv.M.dv <= 0 (0 when the change only adds).
+                double s = -2 * _k01[r] / _k11[r];
+                if (!(s > 0)) s = 0;
+                _scale[r] = (float)Math.Min(1, s);
+                scaled = true;
+                Activations++;
+            }
+            if (!scaled) return;
+            for (int k = 1; k < _count; k++)
+            {
+                ref SolverBody b = ref bodies[k];
+                if (b.IsDynamic == 0) continue;
+                float s = _scale[Find(k)];
+                if (s == 1f) continue;
+                b.LinearVelocity = _linear[k] + s * (b.LinearVelocity - _linear[k]);
+                b.AngularVelocity = _angular[k] + s * (b.AngularVelocity - _angular[k]);
+            }
+        }
+
+        void Join(SolverContext c, int a, int b, bool active)
+        {
+            // Index 0 (static bodies) joins nothing; a kinematic body (non-dynamic, own index)
+            // drives its island, so the island is exempt.
+            bool kinematicA = a != 0 && c.Bodies[a].IsDynamic == 0;
+            bool kinematicB = b != 0 && c.Bodies[b].IsDynamic == 0;
+            if (active || kinematicA || kinematicB)
+            {
+                if (a != 0) _exempt[a] = true;
+                if (b != 0) _exempt[b] = true;
+            }
+            if (a == 0 || b == 0) return;
+            int ra = Find(a), rb = Find(b);
+            if (ra == rb) return;
+            if (ra < rb) _parent[rb] = ra;
+            else _parent[ra] = rb;
+            if (_exempt[ra] || _exempt[rb]) _exempt[ra] = _exempt[rb] = true;
+        }
+
+        int Find(int k)
+        {
+            while (_parent[k] != k)
+            {
+                _parent[k] = _parent[_parent[k]];
+                k = _parent[k];
+            }
+            return k;
+        }
+    }
+}
