@@ -26,12 +26,12 @@ namespace Fulcrum.Tests.State
             // Outputs of the last step (documented: empty after a restore until the next step).
             "World._events", "World._eventCount", "World._jointBreaks", "World._jointBreakCount",
             "World.StatMaxPenetration", "World.StatContactCount", "World.StatMaxJointError", "World.StatReusedManifoldPairs",
-            "World.ParallelNarrowPhaseSteps",
+            "NarrowPhase.Touching", "NarrowPhase.MaxPenetration", "NarrowPhase.ReusedPairs", "NarrowPhase.ParallelSteps",
             // Scratch of one step, cleared or overwritten before it is read.
-            "World._sortKeys", "World._sortItems", "World._sortCount", "World._contactOrder", "World._eventOrder",
+            "NarrowPhase._sortKeys", "NarrowPhase._sortItems", "NarrowPhase._sortCount", "NarrowPhase._contactOrder", "World._eventOrder",
             "World._stepEvents", "World._stepEventKeys", "World._stepEventOrder", "World._stepEventCount",
-            "World._stepTouching", "World._stepMaxPenetration", "World._anyWoken", "World._contactBuffer", "World._pointCache",
-            "World._narrowJob", "World._narrowSlot", "World._freeBodies", "World._reuseCosHalfAngle",
+            "NarrowPhase._in", "NarrowPhase._anyWoken", "NarrowPhase._contactBuffer", "NarrowPhase._pointCache",
+            "NarrowPhase._job", "NarrowPhase._slot", "World._freeBodies", "NarrowPhase._reuseCosHalfAngle",
             "World._workers", "World._solverContext", "World._pgs", "World._tgs",
             "World._stepConstrained", "World._solvedInStep",
             // Queries: their own scratch, and bounds refreshed lazily before the next query.
