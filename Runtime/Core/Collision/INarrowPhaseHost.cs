@@ -1,5 +1,3 @@
-using Fulcrum.Dynamics;
-
 namespace Fulcrum.Collision
 {
     /// <summary>
@@ -14,7 +12,7 @@ namespace Fulcrum.Collision
         /// <summary>Touching contact <paramref name="contact"/> is about to be destroyed (its fat boxes parted): record its End event.</summary>
         void ContactEnded(int contact);
 
-        /// <summary>The worker threads to run the pair functions on (called only when <see cref="NarrowPhaseInput.Threads"/> &gt; 1).</summary>
-        WorkerPool? Workers();
+        /// <summary>The scheduler to run the pair functions on (called only when <see cref="NarrowPhaseInput.Threads"/> &gt; 1).</summary>
+        IParallelScheduler? Workers();
     }
 }

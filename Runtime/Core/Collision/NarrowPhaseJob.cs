@@ -12,7 +12,7 @@ namespace Fulcrum.Collision
     /// statistics) stays in the serial pass. Allocated once per world; the slots and the
     /// per-block buffers grow before the parallel part, never inside it.
     /// </summary>
-    internal sealed class NarrowPhaseJob : IRangeJob
+    internal sealed class NarrowPhaseJob : IParallelJob
     {
         /// <summary>Patches kept per pair (the solver takes no more).</summary>
         public const int MaxPatches = ContactGraph.MaxManifoldsPerPair;
@@ -67,7 +67,7 @@ namespace Fulcrum.Collision
         }
 
         /// <summary>Runs every listed candidate, split into contiguous blocks over the pool's threads.</summary>
-        public void Run(WorkerPool? pool)
+        public void Run(IParallelScheduler? pool)
         {
             if (Count == 0) return;
             // A few blocks per thread balance uneven pairs (meshes, hulls) against boxes.

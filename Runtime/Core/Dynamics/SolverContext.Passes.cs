@@ -52,7 +52,7 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>Velocity or position integration of the solver bodies [start, end).</summary>
-        sealed class BodyJob : IRangeJob
+        sealed class BodyJob : IParallelJob
         {
             readonly SolverContext _c;
             public bool Positions;
@@ -151,7 +151,7 @@ namespace Fulcrum.Dynamics
         enum ColorPass : byte { WarmStart, Solve, Relax, Restitution, Approach, Position }
 
         /// <summary>One pass over the items [start, end) of a colour: its contacts, then its joints.</summary>
-        sealed class ColorJob : IRangeJob
+        sealed class ColorJob : IParallelJob
         {
             readonly SolverContext _c;
             public ColorPass Pass;

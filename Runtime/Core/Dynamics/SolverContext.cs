@@ -70,7 +70,7 @@ namespace Fulcrum.Dynamics
         public bool WideContacts = true;
 
         /// <summary>Threads for the colour batches; null runs everything on the caller's thread.</summary>
-        public WorkerPool? Pool;
+        public IParallelScheduler? Pool;
 
         public SolverContext()
         {

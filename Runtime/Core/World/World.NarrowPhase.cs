@@ -1,5 +1,4 @@
 using Fulcrum.Collision;
-using Fulcrum.Dynamics;
 
 namespace Fulcrum
 {
@@ -62,7 +61,7 @@ namespace Fulcrum
             public World World;
             public void Wake(int body) => World.Wake(body);
             public void ContactEnded(int contact) => World.RecordStepEnd(contact);
-            public WorkerPool? Workers() => World.SolverThreads();
+            public IParallelScheduler? Workers() => World.ParallelScheduler();
         }
     }
 }
