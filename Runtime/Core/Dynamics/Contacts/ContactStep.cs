@@ -5,7 +5,7 @@ namespace Fulcrum.Dynamics
     /// lengths, the contact softness (against a moving body and against a fixed one), the
     /// warm-start scale and the settings the passes use. Built once per step by
     /// <see cref="SolverContext"/> and handed to <see cref="ContactSolver"/>,
-    /// <see cref="ContactPositionSolver"/> and <see cref="ContactSolverWide"/> by reference,
+    /// <see cref="ContactPositionSolver"/> and <c>ContactSolverWide</c> (net10) by reference,
     /// in place of their long argument lists.
     /// </summary>
     internal readonly struct ContactStep
