@@ -12,7 +12,7 @@ namespace Fulcrum.SoftBodies
     /// Reads and writes the rigid bodies it touches (pose, velocity) through <see cref="RigidCoupling"/>.
     /// Bodies that touch each other are resolved after every substep by <see cref="SoftSoftContacts"/>.
     /// </summary>
-    public sealed partial class SoftBodySystem : ISoftBodyStage, IThreadedStage
+    public sealed partial class SoftBodySystem : ISoftBodyStage
     {
         readonly World _world;
         readonly List<SoftBody?> _slots = new List<SoftBody?>();
@@ -21,7 +21,6 @@ namespace Fulcrum.SoftBodies
         readonly List<SoftBody> _active = new List<SoftBody>();
         readonly RigidCoupling _coupling = new RigidCoupling();
         readonly SoftSoftContacts _softContacts = new SoftSoftContacts();
-        ParallelRanges? _pool;
 
         internal SoftBodySystem(World world) => _world = world;
 
@@ -83,23 +82,11 @@ namespace Fulcrum.SoftBodies
             return _slots[handle.Index]!;
         }
 
-        void IThreadedStage.StopThreads()
-        {
-            _pool?.Stop();
-            _pool = null;
-        }
-
         /// <inheritdoc/>
         public void Step(World world, float dt)
         {
             if (_active.Count == 0) return;
-            int threads = world.Settings.Threads;
-            if (threads > 1 && (_pool == null || _pool.Threads != threads))
-            {
-                _pool?.Stop(); // its threads end instead of waiting forever
-                _pool = new ParallelRanges(threads);
-            }
-            ParallelRanges? pool = threads > 1 ? _pool : null;
+            IParallelScheduler? pool = world.ParallelScheduler();
 
             _coupling.Begin(world, dt);
             for (int k = 0; k < _active.Count; k++) _active[k].BeginStep(dt, _coupling);

@@ -31,12 +31,13 @@ namespace Fulcrum.Tests.Solver
             var constraint = new ContactConstraint();
             var points = new ContactConstraintPoint[4];
             Softness soft = Softness.Make(30, 10, 1f / 60f);
-            ContactSolver.Prepare(ref constraint, points, 0, ref manifold, 0, bodies, 0, 1, soft, soft, 1f, false);
+            var step = new ContactStep(1f / 60f, 60f, soft, soft, 1f, false, 3f, 0.005f, 1f);
+            ContactSolver.Prepare(ref constraint, points, 0, ref manifold, 0, bodies, 0, 1, step);
             // Gravity for one step, then the solve: the normal impulse is m g dt, so the rolling
             // torque can remove at most rolling * m g dt / I of spin (the friction keeps it rolling).
             bodies[1].LinearVelocity += new Vector3(0, -9.81f / 60f, 0);
             ContactSolver.WarmStart(ref constraint, points, bodies);
-            for (int i = 0; i < 20; i++) ContactSolver.Solve(ref constraint, points, bodies, 60f, 3f, false);
+            for (int i = 0; i < 20; i++) ContactSolver.Solve(ref constraint, points, bodies, step, false);
             float spin = -bodies[1].AngularVelocity.Z;
             Assert.That(spin, Is.LessThan(2f));
             // Rolling resistance takes rolling * N dt of angular momentum; friction shares it with

@@ -6,7 +6,7 @@ namespace Fulcrum.Tests.Solver
 {
     public class WorkerPoolTests
     {
-        sealed class CountingJob : IRangeJob
+        sealed class CountingJob : IParallelJob
         {
             public int[] Hits = new int[0];
             public void Execute(int start, int end)

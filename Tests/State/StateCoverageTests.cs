@@ -26,13 +26,13 @@ namespace Fulcrum.Tests.State
             // Outputs of the last step (documented: empty after a restore until the next step).
             "World._events", "World._eventCount", "World._jointBreaks", "World._jointBreakCount",
             "World.StatMaxPenetration", "World.StatContactCount", "World.StatMaxJointError", "World.StatReusedManifoldPairs",
-            "World.ParallelNarrowPhaseSteps",
+            "NarrowPhase.Touching", "NarrowPhase.MaxPenetration", "NarrowPhase.ReusedPairs", "NarrowPhase.ParallelSteps",
             // Scratch of one step, cleared or overwritten before it is read.
-            "World._sortKeys", "World._sortItems", "World._sortCount", "World._contactOrder", "World._eventOrder",
+            "NarrowPhase._sortKeys", "NarrowPhase._sortItems", "NarrowPhase._sortCount", "NarrowPhase._contactOrder", "World._eventOrder",
             "World._stepEvents", "World._stepEventKeys", "World._stepEventOrder", "World._stepEventCount",
-            "World._stepTouching", "World._stepMaxPenetration", "World._anyWoken", "World._contactBuffer", "World._pointCache",
-            "World._narrowJob", "World._narrowSlot", "World._freeBodies", "World._reuseCosHalfAngle",
-            "World._workers", "World._solverContext", "World._pgs", "World._tgs",
+            "NarrowPhase._in", "NarrowPhase._anyWoken", "NarrowPhase._contactBuffer", "NarrowPhase._pointCache",
+            "NarrowPhase._job", "NarrowPhase._slot", "World._freeBodies", "NarrowPhase._reuseCosHalfAngle",
+            "World._workers", "World._scheduler", "World._solverContext", "World._pgs", "World._tgs",
             "World._stepConstrained", "World._solvedInStep",
             // Queries: their own scratch, and bounds refreshed lazily before the next query.
             "World._queryBuffer", "World._rayHits", "World._castHits", "World._overlaps", "World._queryBoundsStale",
@@ -44,7 +44,7 @@ namespace Fulcrum.Tests.State
             "SlotAllocator._free",
             // Soft bodies: the per-step contact and pair searches (the contacts' held flags for the
             // Newton solver are saved by SoftBody.WriteState and checked by the round-trip tests), job objects and scratch.
-            "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem._pool", "SoftBodySystem._free", "SoftBodySystem.Diverged",
+            "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem._free", "SoftBodySystem.Diverged",
             "SoftBody._tetJob", "SoftBody._membraneJob", "SoftBody._bendingJob", "SoftBody.Contacts", "SoftBody.SelfContacts", "SoftBody._scratch",
         };
 

@@ -77,10 +77,10 @@ namespace Fulcrum.Collision
 
         /// <summary>
         /// Finds the new overlaps of every queued proxy and hands each pair of shapes to
-        /// <paramref name="world"/> once (a pair of two moved proxies is reported by the one
+        /// <paramref name="callback"/> once (a pair of two moved proxies is reported by the one
         /// with the higher node; a moved static proxy leaves moved moving proxies to report it).
         /// </summary>
-        public void UpdatePairs(World world)
+        public void UpdatePairs<T>(ref T callback) where T : struct, IPairCallback
         {
             for (int i = 0; i < _movedCount; i++)
             {
@@ -89,20 +89,21 @@ namespace Fulcrum.Collision
                 DynamicAabbTree tree = TreeOf(key);
                 int node = key >> 1;
                 Aabb box = tree.FatAabb(node);
-                var finder = new PairFinder { World = world, Shape = tree.UserData(node), Node = node, Tree = MovingTree };
+                var finder = new PairFinder<T> { Callback = callback, Shape = tree.UserData(node), Node = node, Tree = MovingTree };
                 if (IsMoving(key))
                 {
-                    finder.Mode = PairFinder.SkipMovedBelow;
+                    finder.Mode = PairFinderMode.SkipMovedBelow;
                     MovingTree.Query(box, ref finder);
                     finder.Tree = StaticTree;
-                    finder.Mode = PairFinder.TakeAll;
+                    finder.Mode = PairFinderMode.TakeAll;
                     StaticTree.Query(box, ref finder);
                 }
                 else
                 {
-                    finder.Mode = PairFinder.SkipMoved;
+                    finder.Mode = PairFinderMode.SkipMoved;
                     MovingTree.Query(box, ref finder);
                 }
+                callback = finder.Callback;
             }
             for (int i = 0; i < _movedCount; i++)
                 if (_moved[i] >= 0) TreeOf(_moved[i]).SetMoved(_moved[i] >> 1, false);

@@ -1,3 +1,6 @@
+using System.Numerics;
+using Fulcrum.Mathematics;
+
 namespace Fulcrum.Collision
 {
     /// <summary>
@@ -53,5 +56,9 @@ namespace Fulcrum.Collision
 
         /// <summary>The constant speculative distance for a given linear slop, metres.</summary>
         public static float SpeculativeDistance(float linearSlop) => SpeculativeSlopFactor * linearSlop;
+
+        // The farthest a shape's bounds reach from its body's centre of mass (a rotation at
+        // angular speed w moves no point of the shape faster than w times this).
+        internal static float Reach(in Aabb box, Vector3 center) => Vector3.Distance(box.Center, center) + box.Extents.Length();
     }
 }

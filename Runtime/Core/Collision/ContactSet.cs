@@ -9,7 +9,7 @@ namespace Fulcrum.Collision
     /// Each holds only non-sensor pairs with at least one awake dynamic body and at least one
     /// point (speculative points included).
     /// <para>
-    /// Written by <c>World.NarrowPhase</c> (narrow phase). The solver reads the geometry and
+    /// Written by <see cref="NarrowPhase"/>, which owns it. The solver reads the geometry and
     /// writes the accumulated impulses (<see cref="ContactPoint.NormalImpulse"/>,
     /// <see cref="ContactPoint.TangentImpulse1"/>, <see cref="ContactPoint.TangentImpulse2"/>,
     /// <see cref="ContactManifold.RollingImpulse"/>) and

@@ -12,14 +12,14 @@ namespace Fulcrum.Collision
     /// statistics) stays in the serial pass. Allocated once per world; the slots and the
     /// per-block buffers grow before the parallel part, never inside it.
     /// </summary>
-    internal sealed class NarrowPhaseJob : IRangeJob
+    internal sealed class NarrowPhaseJob : IParallelJob
     {
         /// <summary>Patches kept per pair (the solver takes no more).</summary>
         public const int MaxPatches = ContactGraph.MaxManifoldsPerPair;
         /// <summary>Points kept per pair: four per patch after reduction.</summary>
         public const int MaxPoints = MaxPatches * 4;
 
-        readonly World _world;
+        readonly NarrowPhase _narrowPhase;
         int[] _contact = new int[64];
         bool[] _awakeA = new bool[64], _awakeB = new bool[64];
         int[] _patchCount = new int[64];
@@ -34,11 +34,8 @@ namespace Fulcrum.Collision
         /// <summary>Candidates listed for this step.</summary>
         public int Count;
 
-        /// <summary>The step's time step, seconds (the speculative distance depends on it).</summary>
-        public float Dt;
-
-        /// <summary>A job for <paramref name="world"/>'s contacts.</summary>
-        public NarrowPhaseJob(World world) { _world = world; }
+        /// <summary>A job for <paramref name="narrowPhase"/>'s contacts.</summary>
+        public NarrowPhaseJob(NarrowPhase narrowPhase) { _narrowPhase = narrowPhase; }
 
         /// <summary>The contact of candidate <paramref name="i"/>.</summary>
         public int Contact(int i) => _contact[i];
@@ -70,7 +67,7 @@ namespace Fulcrum.Collision
         }
 
         /// <summary>Runs every listed candidate, split into contiguous blocks over the pool's threads.</summary>
-        public void Run(WorkerPool? pool)
+        public void Run(IParallelScheduler? pool)
         {
             if (Count == 0) return;
             // A few blocks per thread balance uneven pairs (meshes, hulls) against boxes.
@@ -95,7 +92,7 @@ namespace Fulcrum.Collision
                 int from = (int)((long)Count * b / _blocks), to = (int)((long)Count * (b + 1) / _blocks);
                 for (int i = from; i < to; i++)
                 {
-                    _world.CollideContact(_contact[i], Dt, buffer);
+                    _narrowPhase.CollideContact(_contact[i], buffer);
                     buffer.Reduce();
                     Store(i, buffer);
                 }

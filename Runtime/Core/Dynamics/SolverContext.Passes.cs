@@ -52,7 +52,7 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>Velocity or position integration of the solver bodies [start, end).</summary>
-        sealed class BodyJob : IRangeJob
+        sealed class BodyJob : IParallelJob
         {
             readonly SolverContext _c;
             public bool Positions;
@@ -151,7 +151,7 @@ namespace Fulcrum.Dynamics
         enum ColorPass : byte { WarmStart, Solve, Relax, Restitution, Approach, Position }
 
         /// <summary>One pass over the items [start, end) of a colour: its contacts, then its joints.</summary>
-        sealed class ColorJob : IRangeJob
+        sealed class ColorJob : IParallelJob
         {
             readonly SolverContext _c;
             public ColorPass Pass;
@@ -162,30 +162,7 @@ namespace Fulcrum.Dynamics
             public void Execute(int start, int end)
             {
                 SolverContext c = _c;
-#if NET
-                int wideEnd = Math.Min(end, WideCount);
-                if (start < wideEnd)
-                {
-                    int first = WideStart + start, last = WideStart + wideEnd;
-                    switch (Pass)
-                    {
-                        case ColorPass.WarmStart: ContactSolverWide.WarmStart(c._wide, first, last, c.Bodies, c._wideBodies); break;
-                        case ColorPass.Solve: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, true); break;
-                        case ColorPass.Relax: ContactSolverWide.Solve(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._contactSoftness, c._fixedSoftness, c._invH, c._settings.MaxContactPushSpeed, false); break;
-                        case ColorPass.Restitution: ContactSolverWide.ApplyRestitution(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies, c._settings.RestitutionThreshold); break;
-                        case ColorPass.Approach: ContactSolverWide.RefreshApproach(c._wide, c._wideImpact, first, last, c.Bodies, c._wideBodies); break;
-                        default:
-                            // The position pass needs only geometry, which the scalar constraints keep.
-                            for (int g = first; g < last; g++)
-                            {
-                                ReadOnlySpan<int> lanes = c.WideLanes(g);
-                                for (int lane = 0; lane < lanes.Length; lane++)
-                                    ContactPositionSolver.Solve(ref c.Contacts[lanes[lane]], c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt);
-                            }
-                            break;
-                    }
-                }
-#endif
+                c.RunWide(Pass, WideStart, WideCount, start, end);
                 start = Math.Max(start, WideCount) - WideCount;
                 end -= WideCount;
                 if (end <= 0) return;
@@ -196,11 +173,11 @@ namespace Fulcrum.Dynamics
                     switch (Pass)
                     {
                         case ColorPass.WarmStart: ContactSolver.WarmStart(ref k, c.Points, c.Bodies); break;
-                        case ColorPass.Solve: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, true); break;
-                        case ColorPass.Relax: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._invH, c._settings.MaxContactPushSpeed, false); break;
-                        case ColorPass.Restitution: ContactSolver.ApplyRestitution(ref k, c.Points, c.Bodies, c._settings.RestitutionThreshold); break;
+                        case ColorPass.Solve: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._contactStep, true); break;
+                        case ColorPass.Relax: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._contactStep, false); break;
+                        case ColorPass.Restitution: ContactSolver.ApplyRestitution(ref k, c.Points, c.Bodies, c._contactStep.RestitutionThreshold); break;
                         case ColorPass.Approach: ContactSolver.RefreshApproach(ref k, c.Points, c.Bodies); break;
-                        default: ContactPositionSolver.Solve(ref k, c.Points, c.Bodies, c._settings.LinearSlop, c._settings.MaxContactPushSpeed * c._dt); break;
+                        default: ContactPositionSolver.Solve(ref k, c.Points, c.Bodies, c._contactStep); break;
                     }
                 }
                 if (Pass == ColorPass.Restitution || Pass == ColorPass.Approach) return;

@@ -50,7 +50,7 @@ namespace Fulcrum.Dynamics
         WorldSettings _settings;
         float _dt, _h, _invH;
         float _previousDt;
-        Softness _contactSoftness, _fixedSoftness;
+        ContactStep _contactStep;
         JointSolver.StepParameters _jointParameters;
         readonly ColorJob _colorJob;
         readonly BodyJob _bodyJob;
@@ -62,17 +62,6 @@ namespace Fulcrum.Dynamics
         // Wide groups (net10): per colour a range of groups of Vector<float>.Count manifolds.
         readonly int[] _wideStart = new int[Buckets + 1];
         int _wideGroups;
-#if NET
-        WideContact[] _wide = Array.Empty<WideContact>();
-        WideImpact[] _wideImpact = Array.Empty<WideImpact>();
-        int[] _wideManifold = Array.Empty<int>();
-        int[] _rejected = Array.Empty<int>();
-        readonly int[] _rejectedStart = new int[Buckets + 1];
-        readonly int[] _wideCursor = new int[Buckets];
-        int[] _wideBodies = Array.Empty<int>();
-        int[] _wideSlots = Array.Empty<int>();
-        int[] _wideSource = Array.Empty<int>();
-#endif
 
         /// <summary>Wide groups of the last step (for tests and profiling).</summary>
         public int WideGroupCount => _wideGroups;
@@ -81,7 +70,7 @@ namespace Fulcrum.Dynamics
         public bool WideContacts = true;
 
         /// <summary>Threads for the colour batches; null runs everything on the caller's thread.</summary>
-        public WorkerPool? Pool;
+        public IParallelScheduler? Pool;
 
         /// <summary>Keeps the velocity solve from creating kinetic energy (see <see cref="EnergyGuard"/>).</summary>
         public readonly EnergyGuard Guard = new EnergyGuard();
@@ -173,22 +162,7 @@ namespace Fulcrum.Dynamics
             if (_scalarContacts.Length < manifolds) _scalarContacts = new int[manifolds];
             _shock.Reserve(b, manifolds);
             Guard.Reserve(b);
-#if NET
-            if (_rejected.Length < manifolds) _rejected = new int[manifolds];
-            // Each colour's last group may be padded: at most one group per colour more.
-            int width = ContactSolverWide.Width;
-            int groups = (manifolds + width - 1) / width + Buckets;
-            int lanes = groups * width;
-            if (_wide.Length < groups)
-            {
-                _wide = new WideContact[groups];
-                _wideImpact = new WideImpact[groups];
-            }
-            if (_wideManifold.Length < lanes) _wideManifold = new int[lanes];
-            if (_wideBodies.Length < 2 * lanes) _wideBodies = new int[2 * lanes];
-            if (_wideSlots.Length < 4 * lanes) _wideSlots = new int[4 * lanes];
-            if (_wideSource.Length < lanes) _wideSource = new int[lanes];
-#endif
+            ReserveWide(manifolds);
         }
 
         /// <summary>The solver index of a body slot (0 for the fixed body and the world, -1).</summary>
@@ -309,9 +283,7 @@ namespace Fulcrum.Dynamics
                     point.LastSubstep = point.Normal.Impulse;
                 }
             }
-#if NET
-            for (int g = 0; g < _wideGroups; g++) ContactSolverWide.Accumulate(_wide[g], ref _wideImpact[g]);
-#endif
+            AccumulateWide();
         }
 
         /// <summary>
@@ -326,11 +298,7 @@ namespace Fulcrum.Dynamics
                 ref ContactConstraint c = ref Contacts[_scalarContacts[k]];
                 ContactSolver.Store(c, Points, ref _manifolds[c.Manifold], scale);
             }
-#if NET
-            int width = ContactSolverWide.Width;
-            for (int g = 0; g < _wideGroups; g++)
-                ContactSolverWide.Store(_wide[g], _wideImpact[g], _wideSlots, _wideManifold, g * width, _manifolds, scale);
-#endif
+            StoreWide(scale);
             float maxError = 0;
             for (int k = 0; k < JointCount; k++)
             {

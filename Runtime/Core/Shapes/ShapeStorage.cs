@@ -25,6 +25,13 @@ namespace Fulcrum
         public ulong[] UserData = Array.Empty<ulong>();
         public Aabb[] WorldAabb = Array.Empty<Aabb>();         // tight bounds at the current pose
         public int[] ProxyId = Array.Empty<int>();             // broad-phase proxy, -1 when none
+        /// <summary>The world pose of shape <paramref name="shape"/>: its body's pose times its local pose.</summary>
+        public Pose WorldPose(int shape, BodyStorage bodies)
+        {
+            int b = Body[shape];
+            return new Pose(bodies.Position[b], bodies.Rotation[b]) * LocalPose[shape];
+        }
+
         /// <summary>True when the handle names a live shape.</summary>
         public bool IsLive(ShapeHandle h) => _slots.IsLive(h.Index, h.Generation);
 

@@ -65,15 +65,11 @@ namespace Fulcrum
             ForgetIgnoredPairs(shape);
         }
 
-        // The shape's world pose: this step's broad-phase copy for awake moving shapes, computed
-        // afresh for the others (static, sleeping).
-        Pose StepShapePose(int shape) => _shapePoseStep[shape] == _stepIndex ? _shapePose[shape] : ShapeWorldPose(shape);
-
         /// <summary>
         /// <see cref="StepStage.BroadPhase"/>: refreshes the bounds of awake moving shapes, swept
         /// over their predicted motion in this step, moves the proxies whose swept bounds left
         /// their fat boxes (or whose fat boxes became far too loose), then finds the new pairs,
-        /// which the pair filter <see cref="AddPair"/> turns into contacts. Reads: body poses,
+        /// which the pair filter <see cref="AddPair"/> (through <see cref="PairFilter"/>) turns into contacts. Reads: body poses,
         /// velocities and awake flags, shape geometry, layers and joints (through the filter).
         /// Writes: the shapes' world bounds, this step's shape poses and motion bounds, the
         /// proxies' fat boxes (and the step they changed), new contacts in the contact graph.
@@ -93,14 +89,15 @@ namespace Fulcrum
                 _shapePoseStep[i] = _stepIndex;
                 Aabb tight = s.Geometry[i].ComputeAabb(pose);
                 s.WorldAabb[i] = tight;
-                float angular = b.AngularVelocity[body].Length() * dt * Reach(tight, b.Center[body]);
+                float angular = b.AngularVelocity[body].Length() * dt * CollisionMargins.Reach(tight, b.Center[body]);
                 Aabb swept = tight.Expanded(grow + angular);
                 Vector3 move = b.LinearVelocity[body] * dt;
                 _shapeMotion[i] = move.Length() + angular;
                 swept = new Aabb(swept.Min + Vector3.Min(move, Vector3.Zero), swept.Max + Vector3.Max(move, Vector3.Zero));
                 if (RefitProxy(s.ProxyId[i], swept)) _fatBoxStep[i] = _stepIndex;
             }
-            _broadPhase.UpdatePairs(this);
+            var filter = new PairFilter { World = this };
+            _broadPhase.UpdatePairs(ref filter);
         }
 
         // True when the proxy got a new fat box.
@@ -114,8 +111,12 @@ namespace Fulcrum
             return true;
         }
 
-        // The farthest a shape's bounds reach from its body's centre of mass.
-        static float Reach(in Aabb box, Vector3 center) => Vector3.Distance(box.Center, center) + box.Extents.Length();
+        // The broad phase's pair callback: hands each new overlap to the world's pair filter.
+        struct PairFilter : IPairCallback
+        {
+            public World World;
+            public void AddPair(int shapeA, int shapeB) => World.AddPair(shapeA, shapeB);
+        }
 
         /// <summary>
         /// The pair filter: called by the broad phase for each new overlap of fat boxes.
@@ -123,7 +124,7 @@ namespace Fulcrum
         /// dynamic (or, for a sensor, not static), their layers accept each other, a pair
         /// function exists and the pair is not known yet.
         /// </summary>
-        internal void AddPair(int shapeA, int shapeB)
+        void AddPair(int shapeA, int shapeB)
         {
             ShapeStorage s = Shapes;
             int bodyA = s.Body[shapeA], bodyB = s.Body[shapeB];

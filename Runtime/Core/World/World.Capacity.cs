@@ -27,25 +27,15 @@ namespace Fulcrum
             // Touching pairs (one manifold each when convex; meshes may have up to four, which
             // this does not plan for): a box in a pyramid touches about 3.6 others.
             int manifolds = Math.Max(ContactGraph.Count, Math.Min(pairs, 4 * Math.Max(bodies, 1)));
-            ContactGraph.Reserve(pairs, manifolds);
-            Contacts.Reserve(manifolds);
+            _narrowPhase.Reserve(pairs, manifolds);
             _broadPhase.Reserve(Math.Max(bodies, Shapes.SlotCount));
-            _contactOrder.Reserve(pairs);
             _eventOrder.Reserve(pairs);
-            ReserveSorting(pairs);
             ReserveEvents(pairs);
             Joints.EnsureBodies(slots);
             _islands.Reserve(slots, manifolds, Joints.ActiveCount);
             _solverContext.Reserve(slots, manifolds, Joints.ActiveCount);
             if (_freeBodies.Length < slots) _freeBodies = new int[slots];
             if (_solvedInStep.Length < slots) Array.Resize(ref _solvedInStep, slots);
-        }
-
-        void ReserveSorting(int pairs)
-        {
-            if (_sortKeys.Length >= pairs) return;
-            Array.Resize(ref _sortKeys, pairs);
-            Array.Resize(ref _sortItems, pairs);
         }
 
         void ReserveEvents(int pairs)

@@ -119,11 +119,7 @@ namespace Fulcrum
         }
 
         /// <summary>The world pose of a shape: its body's pose times its local pose.</summary>
-        internal Pose ShapeWorldPose(int shape)
-        {
-            int b = Shapes.Body[shape];
-            return new Pose(Bodies.Position[b], Bodies.Rotation[b]) * Shapes.LocalPose[shape];
-        }
+        internal Pose ShapeWorldPose(int shape) => Shapes.WorldPose(shape, Bodies);
 
         void ReleaseShape(int i)
         {

@@ -10,25 +10,7 @@ namespace Fulcrum
         readonly PgsSolver _pgs = new PgsSolver();
         readonly TgsSolver _tgs = new TgsSolver();
         int[] _freeBodies = Array.Empty<int>();
-        WorkerPool? _workers;
-
-        internal WorkerPool? SolverPoolForTests => _workers;
-
         internal SolverContext SolverContextForTests => _solverContext;
-
-        // The solver's threads follow Settings.Threads; a change of count replaces the pool
-        // (outside the steady state, so the allocation does not recur).
-        WorkerPool? SolverThreads()
-        {
-            int threads = _settings.Threads;
-            if (threads <= 1) return null;
-            if (_workers == null || _workers.ThreadCount != threads)
-            {
-                _workers?.Stop();
-                _workers = new WorkerPool(threads - 1);
-            }
-            return _workers;
-        }
 
         /// <summary>The manifold pool that this step's contact set and the islands index into.</summary>
         ContactManifold[] StepManifolds() => Contacts.Pool;
@@ -51,7 +33,7 @@ namespace Fulcrum
             _stepConstrained = constrained;
             if (constrained)
             {
-                _solverContext.Pool = SolverThreads();
+                _solverContext.Pool = ParallelScheduler();
                 ContactManifold[] manifolds = StepManifolds();
                 _solverContext.Begin(Bodies, Joints, manifolds, _islands, _settings, dt, solver.SubstepCount(_settings));
             }

@@ -152,12 +152,9 @@ namespace Fulcrum
             Shapes = shapes;
             Joints = joints;
             _broadPhase = broadPhase;
-            ContactGraph = graph;
             IgnoredPairs = ignored;
             IgnoredPairList = new System.Collections.Generic.List<ulong>(ignoredList);
-            Contacts.Pool = graph.Manifolds;
-            Contacts.Source = source;
-            Contacts.ManifoldCount = manifoldCount;
+            _narrowPhase.Restore(graph, source, manifoldCount);
             _shapeMotion = shapeMotion;
             _shapeRadius = shapeRadius;
             _shapePose = shapePose;
@@ -170,8 +167,6 @@ namespace Fulcrum
             _removalEventCount = removalCount;
             _eventCount = 0;
             _jointBreakCount = 0;
-            _narrowJob = null;
-            _narrowSlot = Array.Empty<int>();
             _queryBoundsStale = true;
             _profile = default;
             ResetStatistics();

@@ -1,7 +1,7 @@
 namespace Fulcrum.SoftBodies
 {
     /// <summary>
-    /// One colour range of tets for <see cref="ParallelRanges"/>: the position solve, or with
+    /// One colour range of tets for the <see cref="IParallelScheduler"/>: the position solve, or with
     /// <see cref="Damping"/> the velocity damping pass. The model is a type argument so the loop is specialised.
     /// </summary>
     internal sealed class TetRangeJob<TModel> : RangeJob where TModel : struct, IHyperelasticModel

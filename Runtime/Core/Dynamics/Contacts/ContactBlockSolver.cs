@@ -75,15 +75,15 @@ namespace Fulcrum.Dynamics
         /// <paramref name="gamma1"/>/<paramref name="gamma2"/> are the rows' velocity bias and
         /// softness (0 for rigid rows). Velocities are updated in place.
         /// </summary>
-        public static void SolvePair(in ContactBlockPair pair, ContactConstraintPoint[] points, Vector3 n, float mA, float mB,
-            float bias1, float gamma1, float bias2, float gamma2,
-            ref Vector3 vA, ref Vector3 wA, ref Vector3 vB, ref Vector3 wB)
+        public static void SolvePair(in ContactBlockPair pair, ContactConstraintPoint[] points, in ContactPairMotion m,
+            float bias1, float gamma1, float bias2, float gamma2, ref BodyPairVelocity v)
         {
             ref ContactConstraintPoint p1 = ref points[pair.I];
             ref ContactConstraintPoint p2 = ref points[pair.J];
+            Vector3 n = m.Normal;
             float a1 = p1.Normal.Impulse, a2 = p2.Normal.Impulse;
-            float vn1 = p1.Normal.Velocity(n, vA, wA, vB, wB);
-            float vn2 = p2.Normal.Velocity(n, vA, wA, vB, wB);
+            float vn1 = p1.Normal.Velocity(n, v.LinearA, v.AngularA, v.LinearB, v.AngularB);
+            float vn2 = p2.Normal.Velocity(n, v.LinearA, v.AngularA, v.LinearB, v.AngularB);
             float A11 = pair.K11 + gamma1, A22 = pair.K22 + gamma2, A12 = pair.K12;
             float b1 = vn1 + bias1 - (pair.K11 * a1 + pair.K12 * a2);
             float b2 = vn2 + bias2 - (pair.K12 * a1 + pair.K22 * a2);
@@ -128,10 +128,10 @@ namespace Fulcrum.Dynamics
                 p2.MaxNormalImpulse = x2;
             }
             Vector3 p = (d1 + d2) * n;
-            vA -= mA * p;
-            vB += mB * p;
-            wA -= d1 * p1.Normal.VelocityA + d2 * p2.Normal.VelocityA;
-            wB += d1 * p1.Normal.VelocityB + d2 * p2.Normal.VelocityB;
+            v.LinearA -= m.InvMassA * p;
+            v.LinearB += m.InvMassB * p;
+            v.AngularA -= d1 * p1.Normal.VelocityA + d2 * p2.Normal.VelocityA;
+            v.AngularB += d1 * p1.Normal.VelocityB + d2 * p2.Normal.VelocityB;
         }
     }
 }

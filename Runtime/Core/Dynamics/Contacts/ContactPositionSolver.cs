@@ -17,8 +17,9 @@ namespace Fulcrum.Dynamics
         public const float Beta = 0.2f;
 
         /// <summary>One NGS pass over the manifold; returns the deepest overlap seen, m (&gt;= 0).</summary>
-        public static float Solve(ref ContactConstraint c, ContactConstraintPoint[] points, SolverBody[] bodies, float slop, float maxCorrection)
+        public static float Solve(ref ContactConstraint c, ContactConstraintPoint[] points, SolverBody[] bodies, in ContactStep step)
         {
+            float slop = step.LinearSlop, maxCorrection = step.MaxCorrection;
             ref SolverBody a = ref bodies[c.BodyA];
             ref SolverBody b = ref bodies[c.BodyB];
             Vector3 n = c.Normal;

@@ -32,12 +32,12 @@ namespace Fulcrum.Dynamics
         /// Builds the constraint of manifold <paramref name="m"/> between solver bodies
         /// <paramref name="ia"/> and <paramref name="ib"/>; its points go to
         /// <paramref name="points"/> from <paramref name="firstPoint"/> on. Impulses from the
-        /// manifold are scaled by <paramref name="warmScale"/> (0 turns warm starting off).
+        /// manifold are scaled by the step's <see cref="ContactStep.WarmScale"/> (0 turns warm starting off).
         /// </summary>
         public static void Prepare(ref ContactConstraint c, ContactConstraintPoint[] points, int firstPoint,
-            ref ContactManifold m, int manifoldIndex, SolverBody[] bodies, int ia, int ib,
-            in Softness contactSoftness, in Softness fixedSoftness, float warmScale, bool block)
+            ref ContactManifold m, int manifoldIndex, SolverBody[] bodies, int ia, int ib, in ContactStep step)
         {
+            float warmScale = step.WarmScale;
             ref SolverBody a = ref bodies[ia];
             ref SolverBody b = ref bodies[ib];
             c.BodyA = ia;
@@ -54,7 +54,7 @@ namespace Fulcrum.Dynamics
             c.Restitution = m.Restitution;
             // A body that cannot move makes the contact stiffer: the other side's mass is all
             // the spring sees (Box2D v3 doubles the contact hertz for static contacts).
-            c.Softness = a.IsDynamic == 0 || b.IsDynamic == 0 ? fixedSoftness : contactSoftness;
+            c.Softness = a.IsDynamic == 0 || b.IsDynamic == 0 ? step.FixedBody : step.Contact;
 
             Vector3 vA = a.LinearVelocity, wA = a.AngularVelocity, vB = b.LinearVelocity, wB = b.AngularVelocity;
             Vector3 centroidA = Vector3.Zero, centroidB = Vector3.Zero;
@@ -108,7 +108,7 @@ namespace Fulcrum.Dynamics
                 c.RollingImpulse2 = warmScale * Vector3.Dot(m.RollingImpulse, c.Tangent2);
             }
 
-            if (block) ContactBlockSolver.Prepare(ref c, points);
+            if (step.Block) ContactBlockSolver.Prepare(ref c, points);
             else
             {
                 c.Block0 = ContactBlockPair.None;
@@ -159,43 +159,42 @@ namespace Fulcrum.Dynamics
 
         /// <summary>
         /// One Gauss-Seidel pass over the manifold. With <paramref name="useBias"/> the normal
-        /// rows are soft and push overlapping bodies apart (at most <paramref name="maxPushSpeed"/>);
+        /// rows are soft and push overlapping bodies apart (at most <see cref="ContactStep.MaxPushSpeed"/>);
         /// without it they are rigid and only remove approaching velocity (the relax pass, and
         /// every PGS velocity iteration). Speculative points (s &gt; 0) always allow an approach of
         /// s / h. Friction is bounded by mu times the normal impulse of this very pass, so it can
         /// never hold more than the contact presses (no creep on slopes).
         /// </summary>
         public static void Solve(ref ContactConstraint c, ContactConstraintPoint[] points, SolverBody[] bodies,
-            float invH, float maxPushSpeed, bool useBias)
+            in ContactStep step, bool useBias)
         {
             ref SolverBody a = ref bodies[c.BodyA];
             ref SolverBody b = ref bodies[c.BodyB];
-            Vector3 vA = a.LinearVelocity, wA = a.AngularVelocity, vB = b.LinearVelocity, wB = b.AngularVelocity;
+            var v = new BodyPairVelocity { LinearA = a.LinearVelocity, AngularA = a.AngularVelocity, LinearB = b.LinearVelocity, AngularB = b.AngularVelocity };
             float mA = c.InvMassA, mB = c.InvMassB;
             Vector3 n = c.Normal;
-            Vector3 dThetaA = a.DeltaAngle, dThetaB = b.DeltaAngle;
-            float drift = Vector3.Dot(n, b.DeltaPosition - a.DeltaPosition);
-            Softness soft = c.Softness;
+            var motion = new ContactPairMotion(n, mA, mB, Vector3.Dot(n, b.DeltaPosition - a.DeltaPosition), a.DeltaAngle, b.DeltaAngle, c.Softness);
             int first = c.FirstPoint, end = first + c.PointCount;
 
             if (c.Block0.IsUsed)
             {
-                SolveBlock(in c.Block0, points, n, mA, mB, drift, dThetaA, dThetaB, soft, invH, maxPushSpeed, useBias, ref vA, ref wA, ref vB, ref wB);
+                SolveBlock(in c.Block0, points, motion, step, useBias, ref v);
                 if (c.Block1.IsUsed)
-                    SolveBlock(in c.Block1, points, n, mA, mB, drift, dThetaA, dThetaB, soft, invH, maxPushSpeed, useBias, ref vA, ref wA, ref vB, ref wB);
+                    SolveBlock(in c.Block1, points, motion, step, useBias, ref v);
                 else if (c.PointCount == 3)
                 {
                     // The point left out of the pair is solved on its own.
                     for (int k = first; k < end; k++)
                         if (k != c.Block0.I && k != c.Block0.J)
-                            SolveNormal(ref points[k], n, mA, mB, drift, dThetaA, dThetaB, soft, invH, maxPushSpeed, useBias, ref vA, ref wA, ref vB, ref wB);
+                            SolveNormal(ref points[k], motion, step, useBias, ref v);
                 }
             }
             else
             {
                 for (int k = first; k < end; k++)
-                    SolveNormal(ref points[k], n, mA, mB, drift, dThetaA, dThetaB, soft, invH, maxPushSpeed, useBias, ref vA, ref wA, ref vB, ref wB);
+                    SolveNormal(ref points[k], motion, step, useBias, ref v);
             }
+            Vector3 vA = v.LinearA, wA = v.AngularA, vB = v.LinearB, wB = v.AngularB;
 
             float mu = c.Friction;
             float totalNormal = 0;
@@ -272,20 +271,20 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        static float CurrentSeparation(in ContactConstraintPoint p, float drift, Vector3 dThetaA, Vector3 dThetaB) =>
-            p.Separation + drift + Vector3.Dot(dThetaB, p.Normal.AngularB) - Vector3.Dot(dThetaA, p.Normal.AngularA);
+        static float CurrentSeparation(in ContactConstraintPoint p, in ContactPairMotion m) =>
+            p.Separation + m.Drift + Vector3.Dot(m.DThetaB, p.Normal.AngularB) - Vector3.Dot(m.DThetaA, p.Normal.AngularA);
 
-        static void RowTerms(float s, in Softness soft, float invH, float maxPushSpeed, bool useBias, out float bias, out float massScale, out float impulseScale)
+        static void RowTerms(float s, in Softness soft, in ContactStep step, bool useBias, out float bias, out float massScale, out float impulseScale)
         {
             if (s > 0)
             {
-                bias = s * invH;
+                bias = s * step.InverseH;
                 massScale = 1;
                 impulseScale = 0;
             }
             else if (useBias)
             {
-                bias = MathF.Max(soft.BiasRate * s, -maxPushSpeed);
+                bias = MathF.Max(soft.BiasRate * s, -step.MaxPushSpeed);
                 massScale = soft.MassScale;
                 impulseScale = soft.ImpulseScale;
             }
@@ -297,13 +296,12 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        static void SolveNormal(ref ContactConstraintPoint p, Vector3 n, float mA, float mB, float drift, Vector3 dThetaA, Vector3 dThetaB,
-            in Softness soft, float invH, float maxPushSpeed, bool useBias,
-            ref Vector3 vA, ref Vector3 wA, ref Vector3 vB, ref Vector3 wB)
+        static void SolveNormal(ref ContactConstraintPoint p, in ContactPairMotion m, in ContactStep step, bool useBias, ref BodyPairVelocity v)
         {
-            float s = CurrentSeparation(p, drift, dThetaA, dThetaB);
-            RowTerms(s, soft, invH, maxPushSpeed, useBias, out float bias, out float massScale, out float impulseScale);
-            float vn = p.Normal.Velocity(n, vA, wA, vB, wB);
+            float s = CurrentSeparation(p, m);
+            RowTerms(s, m.Softness, step, useBias, out float bias, out float massScale, out float impulseScale);
+            Vector3 n = m.Normal;
+            float vn = p.Normal.Velocity(n, v.LinearA, v.AngularA, v.LinearB, v.AngularB);
             float old = p.Normal.Impulse;
             float impulse = -p.Normal.EffectiveMass * massScale * (vn + bias) - impulseScale * old;
             float total = MathF.Max(old + impulse, 0f);
@@ -315,24 +313,23 @@ namespace Fulcrum.Dynamics
                 p.MaxNormalImpulse = total;
             }
             Vector3 P = impulse * n;
-            vA -= mA * P;
-            wA -= impulse * p.Normal.VelocityA;
-            vB += mB * P;
-            wB += impulse * p.Normal.VelocityB;
+            v.LinearA -= m.InvMassA * P;
+            v.AngularA -= impulse * p.Normal.VelocityA;
+            v.LinearB += m.InvMassB * P;
+            v.AngularB += impulse * p.Normal.VelocityB;
         }
 
-        static void SolveBlock(in ContactBlockPair pair, ContactConstraintPoint[] points, Vector3 n, float mA, float mB,
-            float drift, Vector3 dThetaA, Vector3 dThetaB, in Softness soft, float invH, float maxPushSpeed, bool useBias,
-            ref Vector3 vA, ref Vector3 wA, ref Vector3 vB, ref Vector3 wB)
+        static void SolveBlock(in ContactBlockPair pair, ContactConstraintPoint[] points, in ContactPairMotion m, in ContactStep step, bool useBias,
+            ref BodyPairVelocity v)
         {
-            float s1 = CurrentSeparation(points[pair.I], drift, dThetaA, dThetaB);
-            float s2 = CurrentSeparation(points[pair.J], drift, dThetaA, dThetaB);
-            RowTerms(s1, soft, invH, maxPushSpeed, useBias, out float bias1, out float ms1, out float is1);
-            RowTerms(s2, soft, invH, maxPushSpeed, useBias, out float bias2, out float ms2, out float is2);
+            float s1 = CurrentSeparation(points[pair.I], m);
+            float s2 = CurrentSeparation(points[pair.J], m);
+            RowTerms(s1, m.Softness, step, useBias, out float bias1, out float ms1, out float is1);
+            RowTerms(s2, m.Softness, step, useBias, out float bias2, out float ms2, out float is2);
             // gamma = K impulseScale / massScale: the compliance the soft row adds to the diagonal.
             float gamma1 = is1 > 0 ? pair.K11 * is1 / ms1 : 0;
             float gamma2 = is2 > 0 ? pair.K22 * is2 / ms2 : 0;
-            ContactBlockSolver.SolvePair(pair, points, n, mA, mB, bias1, gamma1, bias2, gamma2, ref vA, ref wA, ref vB, ref wB);
+            ContactBlockSolver.SolvePair(pair, points, m, bias1, gamma1, bias2, gamma2, ref v);
         }
 
         /// <summary>

@@ -36,7 +36,7 @@ namespace Fulcrum.Dynamics
             int width = Width;
             bool restitution = false;
             var warm = new Vector<float>(warmScale);
-            Lanes l = default;
+            BodyLanes l = default;
             for (int g = first; g < end; g++)
             {
                 int offset = g * width;
@@ -46,7 +46,7 @@ namespace Fulcrum.Dynamics
                     int mi = laneManifolds[offset + lane];
                     if (mi >= 0) LoadManifold(ref m, lane, ref manifolds[mi]);
                 }
-                Gather(bodies, laneBodies, offset, ref l, true, false);
+                WideBodies.Gather(bodies, laneBodies, offset, ref l, true, false);
                 int reject = PrepareGroup(ref groups[g], ref impacts[g], m, l, warm, out Vector<int> far);
                 restitution |= !Vector.EqualsAll(impacts[g].Restitution, Vector<float>.Zero);
                 for (int lane = 0; lane < width; lane++)
@@ -111,7 +111,7 @@ namespace Fulcrum.Dynamics
 
         // ContactRow.Setup and ContactRow.Velocity, lane-wise.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static PreparedRow Row(in WideVector3 rA, in WideVector3 rB, in WideVector3 n, Vector<float> mass, in Lanes l)
+        static PreparedRow Row(in WideVector3 rA, in WideVector3 rB, in WideVector3 n, Vector<float> mass, in BodyLanes l)
         {
             PreparedRow r;
             r.AngularA = WideVector3.Cross(rA, n);
@@ -156,7 +156,7 @@ namespace Fulcrum.Dynamics
         }
 
         // Returns the lanes (bits) whose block pairs are ill-conditioned; far: the point paired with point 0.
-        static int PrepareGroup(ref WideContact w, ref WideImpact impact, in ManifoldLanes m, in Lanes l, Vector<float> warm, out Vector<int> far)
+        static int PrepareGroup(ref WideContact w, ref WideImpact impact, in ManifoldLanes m, in BodyLanes l, Vector<float> warm, out Vector<int> far)
         {
             WideVector3 n = m.Normal;
             Vector<float> mass = l.InvMassA + l.InvMassB;
@@ -229,7 +229,7 @@ namespace Fulcrum.Dynamics
 
         // ContactRow.Setup's effective mass of a friction row at the centroid.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static Vector<float> FrictionMass(in WideVector3 cA, in WideVector3 cB, in WideVector3 t, Vector<float> mass, in Lanes l)
+        static Vector<float> FrictionMass(in WideVector3 cA, in WideVector3 cB, in WideVector3 t, Vector<float> mass, in BodyLanes l)
         {
             WideVector3 angularA = WideVector3.Cross(cA, t), angularB = WideVector3.Cross(cB, t);
             return Inverse(mass + WideVector3.Dot(angularA, l.IA.Transform(angularA)) + WideVector3.Dot(angularB, l.IB.Transform(angularB)));

@@ -27,104 +27,20 @@ namespace Fulcrum.Dynamics
             Vector.IsHardwareAccelerated && c.PointCount == 4 && c.Block0.IsUsed && c.Block1.IsUsed && c.RollingFriction == 0;
 
         /// <summary>
-        /// Transposes the prepared constraints <paramref name="source"/>[i] into lanes of
-        /// <paramref name="w"/> and <paramref name="impact"/>; unused lanes get the fixed body
-        /// and inert rows. <paramref name="laneSlots"/> gets, per lane and slot, the point's
-        /// index in its manifold.
+        /// The <see cref="ContactStep"/> in lanes: the softness of a normal row against a moving
+        /// body and against a fixed one, 1 / substep and the push speed bound.
         /// </summary>
-        public static void Load(ref WideContact w, ref WideImpact impact, int[] laneBodies, int groupOffset, ReadOnlySpan<int> source,
-            ContactConstraint[] contacts, ContactConstraintPoint[] points, ContactManifold[] manifolds, int[] laneSlots)
-        {
-            int width = Width;
-            // Every field of a used lane is written below: only padding lanes need the clear.
-            if (source.Length < width)
-            {
-                w = default;
-                impact = default;
-            }
-            w.Loaded = Vector<int>.Zero;
-            for (int lane = 0; lane < width; lane++)
-            {
-                int at = groupOffset + lane;
-                if (lane >= source.Length)
-                {
-                    laneBodies[2 * at] = 0;
-                    laneBodies[2 * at + 1] = 0;
-                    laneSlots[4 * at] = laneSlots[4 * at + 1] = laneSlots[4 * at + 2] = laneSlots[4 * at + 3] = -1;
-                    continue;
-                }
-                ref ContactConstraint c = ref contacts[source[lane]];
-                laneBodies[2 * at] = c.BodyA;
-                laneBodies[2 * at + 1] = c.BodyB;
-                LoadPoint(ref w.P0, ref impact.P0, lane, points[c.Block0.I]);
-                LoadPoint(ref w.P1, ref impact.P1, lane, points[c.Block0.J]);
-                LoadPoint(ref w.P2, ref impact.P2, lane, points[c.Block1.I]);
-                LoadPoint(ref w.P3, ref impact.P3, lane, points[c.Block1.J]);
-                laneSlots[4 * at] = points[c.Block0.I].ManifoldPoint;
-                laneSlots[4 * at + 1] = points[c.Block0.J].ManifoldPoint;
-                laneSlots[4 * at + 2] = points[c.Block1.I].ManifoldPoint;
-                laneSlots[4 * at + 3] = points[c.Block1.J].ManifoldPoint;
-                WideVector3.Lane(ref w.K11a, lane) = c.Block0.K11;
-                WideVector3.Lane(ref w.K12a, lane) = c.Block0.K12;
-                WideVector3.Lane(ref w.K22a, lane) = c.Block0.K22;
-                WideVector3.Lane(ref w.K11b, lane) = c.Block1.K11;
-                WideVector3.Lane(ref w.K12b, lane) = c.Block1.K12;
-                WideVector3.Lane(ref w.K22b, lane) = c.Block1.K22;
-                w.Normal.Set(lane, c.Normal);
-                WideVector3.Lane(ref w.Friction, lane) = c.Friction;
-                WideVector3.Lane(ref impact.Restitution, lane) = c.Restitution;
-                // The friction rows' centroid, summed as ContactSolver.Prepare sums it.
-                ref ContactManifold m = ref manifolds[c.Manifold];
-                Vector3 centroidA = Vector3.Zero, centroidB = Vector3.Zero;
-                for (int i = 0; i < 4; i++)
-                {
-                    centroidA += ContactManifold.Point(ref m, i).AnchorA;
-                    centroidB += ContactManifold.Point(ref m, i).AnchorB;
-                }
-                w.CentroidA.Set(lane, centroidA * 0.25f);
-                w.CentroidB.Set(lane, centroidB * 0.25f);
-                WideVector3.Lane(ref w.FrictionMass1, lane) = c.Friction1.EffectiveMass;
-                WideVector3.Lane(ref w.FrictionMass2, lane) = c.Friction2.EffectiveMass;
-                WideVector3.Lane(ref w.FrictionImpulse1, lane) = c.Friction1.Impulse;
-                WideVector3.Lane(ref w.FrictionImpulse2, lane) = c.Friction2.Impulse;
-                WideVector3.Lane(ref w.TwistMass, lane) = c.TwistMass;
-                WideVector3.Lane(ref w.TwistImpulse, lane) = c.TwistImpulse;
-                WideVector3.Lane(ref w.TwistRadius, lane) = c.TwistRadius;
-            }
-        }
-
-        static void LoadPoint(ref WidePoint p, ref WideImpactPoint i, int lane, in ContactConstraintPoint s)
-        {
-            p.AngularA.Set(lane, s.Normal.AngularA);
-            p.AngularB.Set(lane, s.Normal.AngularB);
-            WideVector3.Lane(ref p.Separation, lane) = s.Separation;
-            WideVector3.Lane(ref p.Impulse, lane) = s.Normal.Impulse;
-            WideVector3.Lane(ref i.EffectiveMass, lane) = s.Normal.EffectiveMass;
-            WideVector3.Lane(ref i.RelativeVelocity, lane) = s.RelativeVelocity;
-            WideVector3.Lane(ref i.Applied, lane) = 0;
-            WideVector3.Lane(ref i.LastSubstep, lane) = 0;
-        }
-
-        /// <summary>
-        /// The bodies of a group in lanes: velocities, inverse masses and inertias, the dynamic
-        /// flags and (for the separation update) the motion so far.
-        /// </summary>
-        struct Lanes
-        {
-            public WideVector3 VA, WA, VB, WB, DpA, DpB, DThetaA, DThetaB;
-            public WideMatrix3 IA, IB;
-            // The floats beside the velocities in SolverBody: the inverse mass and the dynamic
-            // flag (an int), written back unchanged by the transposing scatter.
-            public Vector<float> InvMassA, FlagA, InvMassB, FlagB;
-        }
-
-        /// <summary>The softness of a normal row against a moving body and against a fixed one, in lanes.</summary>
-        readonly struct SoftLanes
+        readonly struct StepLanes
         {
             public readonly Vector<float> BiasRate, MassScale, ImpulseScale, FixedBiasRate, FixedMassScale, FixedImpulseScale;
+            public readonly Vector<float> InverseStep, MaxPush;
 
-            public SoftLanes(in Softness contact, in Softness fixedBody)
+            public StepLanes(in ContactStep step)
             {
+                ref readonly Softness contact = ref step.Contact;
+                ref readonly Softness fixedBody = ref step.FixedBody;
+                InverseStep = new Vector<float>(step.InverseH);
+                MaxPush = new Vector<float>(-step.MaxPushSpeed);
                 BiasRate = new Vector<float>(contact.BiasRate);
                 MassScale = new Vector<float>(contact.MassScale);
                 ImpulseScale = new Vector<float>(contact.ImpulseScale);
@@ -134,139 +50,9 @@ namespace Fulcrum.Dynamics
             }
         }
 
-        static void Gather(SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l, bool inertia, bool motion)
-        {
-            if (SolverBodyLanes.IsSupported)
-            {
-                GatherSide(bodies, laneBodies, 2 * groupOffset, inertia, motion, out l.VA, out l.InvMassA, out l.WA, out l.FlagA, out l.IA, out l.DpA, out l.DThetaA);
-                GatherSide(bodies, laneBodies, 2 * groupOffset + 1, inertia, motion, out l.VB, out l.InvMassB, out l.WB, out l.FlagB, out l.IB, out l.DpB, out l.DThetaB);
-                return;
-            }
-            int width = Width;
-            for (int lane = 0; lane < width; lane++)
-            {
-                ref SolverBody a = ref bodies[laneBodies[2 * (groupOffset + lane)]];
-                ref SolverBody b = ref bodies[laneBodies[2 * (groupOffset + lane) + 1]];
-                l.VA.Set(lane, a.LinearVelocity);
-                l.WA.Set(lane, a.AngularVelocity);
-                l.VB.Set(lane, b.LinearVelocity);
-                l.WB.Set(lane, b.AngularVelocity);
-                WideVector3.Lane(ref l.InvMassA, lane) = a.InverseMass;
-                WideVector3.Lane(ref l.InvMassB, lane) = b.InverseMass;
-                WideVector3.Lane(ref l.FlagA, lane) = BitConverter.Int32BitsToSingle(a.IsDynamic);
-                WideVector3.Lane(ref l.FlagB, lane) = BitConverter.Int32BitsToSingle(b.IsDynamic);
-                if (inertia)
-                {
-                    l.IA.Set(lane, a.InverseInertia);
-                    l.IB.Set(lane, b.InverseInertia);
-                }
-                if (!motion) continue;
-                l.DpA.Set(lane, a.DeltaPosition);
-                l.DpB.Set(lane, b.DeltaPosition);
-                l.DThetaA.Set(lane, a.DeltaAngle);
-                l.DThetaB.Set(lane, b.DeltaAngle);
-            }
-        }
-
-        // One side (A: at = 2 groupOffset, B: at + 1) of the eight lanes, by transposes.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void GatherSide(SolverBody[] bodies, int[] laneBodies, int at, bool inertia, bool motion,
-            out WideVector3 v, out Vector<float> invMass, out WideVector3 w, out Vector<float> flag, out WideMatrix3 ii, out WideVector3 dp, out WideVector3 dTheta)
-        {
-            ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
-            ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
-            ref float b2 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 4);
-            ref float b3 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 6);
-            ref float b4 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 8);
-            ref float b5 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 10);
-            ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
-            ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
-            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Linear,
-                out Vector<float> vx, out Vector<float> vy, out Vector<float> vz, out invMass);
-            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Angular,
-                out Vector<float> wx, out Vector<float> wy, out Vector<float> wz, out flag);
-            v = new WideVector3 { X = vx, Y = vy, Z = vz };
-            w = new WideVector3 { X = wx, Y = wy, Z = wz };
-            Vector<float> c2z = default, px = default, py = default, pz = default;
-            if (inertia || motion)
-                SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Displacement,
-                    out c2z, out px, out py, out pz);
-            if (inertia)
-            {
-                SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Inertia,
-                    out Vector<float> c0x, out Vector<float> c0y, out Vector<float> c0z, out Vector<float> c1x);
-                SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Inertia + 4,
-                    out Vector<float> c1y, out Vector<float> c1z, out Vector<float> c2x, out Vector<float> c2y);
-                ii = new WideMatrix3
-                {
-                    C0 = new WideVector3 { X = c0x, Y = c0y, Z = c0z },
-                    C1 = new WideVector3 { X = c1x, Y = c1y, Z = c1z },
-                    C2 = new WideVector3 { X = c2x, Y = c2y, Z = c2z },
-                };
-            }
-            else ii = default;
-            if (!motion)
-            {
-                dp = default;
-                dTheta = default;
-                return;
-            }
-            SolverBodyLanes.Load(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, SolverBodyLanes.Rotation,
-                out Vector<float> qx, out Vector<float> qy, out Vector<float> qz, out Vector<float> qw);
-            dp = new WideVector3 { X = px, Y = py, Z = pz };
-            // SolverBody.DeltaAngle, lane by lane: 2 x the vector part, sign chosen by w.
-            Vector<float> twice = WideVector3.Select(Vector.LessThan(qw, Vector<float>.Zero), new Vector<float>(-2f), new Vector<float>(2f));
-            dTheta = new WideVector3 { X = qx * twice, Y = qy * twice, Z = qz * twice };
-        }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void ScatterSide(SolverBody[] bodies, int[] laneBodies, int at, in WideVector3 v, Vector<float> invMass, in WideVector3 w, Vector<float> flag)
-        {
-            // Only dynamic bodies are written (the flag is the angular block's fourth float).
-            int write = (int)Vector256.ExtractMostSignificantBits(
-                ~Vector256.Equals(Vector.AsVectorInt32(flag).AsVector256(), Vector256<int>.Zero));
-            if (write == 0) return;
-            ref float b0 = ref SolverBodyLanes.Body(bodies, laneBodies, at);
-            ref float b1 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 2);
-            ref float b2 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 4);
-            ref float b3 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 6);
-            ref float b4 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 8);
-            ref float b5 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 10);
-            ref float b6 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 12);
-            ref float b7 = ref SolverBodyLanes.Body(bodies, laneBodies, at + 14);
-            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Linear, v.X, v.Y, v.Z, invMass);
-            SolverBodyLanes.Store(ref b0, ref b1, ref b2, ref b3, ref b4, ref b5, ref b6, ref b7, write, SolverBodyLanes.Angular, w.X, w.Y, w.Z, flag);
-        }
-
-        static void Scatter(SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
-        {
-            if (SolverBodyLanes.IsSupported)
-            {
-                ScatterSide(bodies, laneBodies, 2 * groupOffset, l.VA, l.InvMassA, l.WA, l.FlagA);
-                ScatterSide(bodies, laneBodies, 2 * groupOffset + 1, l.VB, l.InvMassB, l.WB, l.FlagB);
-                return;
-            }
-            int width = Width;
-            for (int lane = 0; lane < width; lane++)
-            {
-                ref SolverBody a = ref bodies[laneBodies[2 * (groupOffset + lane)]];
-                ref SolverBody b = ref bodies[laneBodies[2 * (groupOffset + lane) + 1]];
-                if (a.IsDynamic != 0)
-                {
-                    a.LinearVelocity = l.VA.Get(lane);
-                    a.AngularVelocity = l.WA.Get(lane);
-                }
-                if (b.IsDynamic != 0)
-                {
-                    b.LinearVelocity = l.VB.Get(lane);
-                    b.AngularVelocity = l.WB.Get(lane);
-                }
-            }
-        }
-
         /// <summary>J v of a row along <paramref name="d"/> with angular parts <paramref name="angularA"/>, <paramref name="angularB"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static Vector<float> RowVelocity(in WideVector3 angularA, in WideVector3 angularB, in WideVector3 d, in Lanes l)
+        static Vector<float> RowVelocity(in WideVector3 angularA, in WideVector3 angularB, in WideVector3 d, in BodyLanes l)
         {
             WideVector3 dv = l.VB;
             dv.Subtract(l.VA);
@@ -278,7 +64,7 @@ namespace Fulcrum.Dynamics
         /// <paramref name="angularA"/> (taken from A) and <paramref name="angularB"/> (given to B).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Apply(in WideVector3 linear, in WideVector3 angularA, in WideVector3 angularB, ref Lanes l)
+        static void Apply(in WideVector3 linear, in WideVector3 angularA, in WideVector3 angularB, ref BodyLanes l)
         {
             l.VA.SubtractScaled(linear, l.InvMassA);
             l.VB.AddScaled(linear, l.InvMassB);
@@ -294,38 +80,38 @@ namespace Fulcrum.Dynamics
         /// <summary>The warm start of groups [first, end).</summary>
         public static void WarmStart(WideContact[] groups, int first, int end, SolverBody[] bodies, int[] laneBodies)
         {
-            Lanes l = default;
+            BodyLanes l = default;
             for (int g = first; g < end; g++) WarmStart(ref groups[g], bodies, laneBodies, g * Width, ref l);
         }
 
         /// <summary>One pass (biased or relaxing) over groups [first, end).</summary>
         public static void Solve(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies,
-            in Softness contact, in Softness fixedBody, float invH, float maxPushSpeed, bool useBias)
+            in ContactStep step, bool useBias)
         {
-            var soft = new SoftLanes(contact, fixedBody);
-            Lanes l = default;
+            var soft = new StepLanes(step);
+            BodyLanes l = default;
             for (int g = first; g < end; g++)
-                Solve(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, soft, invH, maxPushSpeed, useBias, ref l);
+                Solve(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, soft, useBias, ref l);
         }
 
         /// <summary>ContactSolver.RefreshApproach for groups [first, end).</summary>
         public static void RefreshApproach(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies)
         {
-            Lanes l = default;
+            BodyLanes l = default;
             for (int g = first; g < end; g++) RefreshApproach(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, ref l);
         }
 
         /// <summary>The restitution pass of groups [first, end).</summary>
         public static void ApplyRestitution(WideContact[] groups, WideImpact[] impacts, int first, int end, SolverBody[] bodies, int[] laneBodies, float threshold)
         {
-            Lanes l = default;
+            BodyLanes l = default;
             for (int g = first; g < end; g++) ApplyRestitution(ref groups[g], ref impacts[g], bodies, laneBodies, g * Width, threshold, ref l);
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
+        static void WarmStart(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref BodyLanes l)
         {
-            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
+            WideBodies.Gather(bodies, laneBodies, groupOffset, ref l, true, true);
             // The substep's separations, for its biased passes (the bodies move after those).
             Vector<float> drift = Drift(w.Normal, l);
             w.P0.Current = Separation(w.P0, drift, l);
@@ -353,12 +139,12 @@ namespace Fulcrum.Dynamics
             angularB.AddScaled(w.P3.AngularB, l3);
             angularB.AddScaled(w.Normal, w.TwistImpulse);
             Apply(linear, angularA, angularB, ref l);
-            Scatter(bodies, laneBodies, groupOffset, ref l);
+            WideBodies.Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
         /// <summary>n . (dpB - dpA): how far the centres of mass have closed along the normal since the step began.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static Vector<float> Drift(in WideVector3 n, in Lanes l)
+        static Vector<float> Drift(in WideVector3 n, in BodyLanes l)
         {
             WideVector3 dp = l.DpB;
             dp.Subtract(l.DpA);
@@ -367,16 +153,16 @@ namespace Fulcrum.Dynamics
 
         /// <summary>A point's separation at the bodies' pose now (ContactSolver.Solve's first-order update).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static Vector<float> Separation(in WidePoint p, Vector<float> drift, in Lanes l) =>
+        static Vector<float> Separation(in WidePoint p, Vector<float> drift, in BodyLanes l) =>
             p.Separation + drift + WideVector3.Dot(l.DThetaB, p.AngularB) - WideVector3.Dot(l.DThetaA, p.AngularA);
 
         // The relaxing pass's gather: the bodies with their motion, and the separations at their pose.
         // Not inlined: the per-group solve is at the JIT's inlining budget, and SolvePair must fit.
         [MethodImpl(MethodImplOptions.NoInlining)]
-        static void GatherMoved(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l,
+        static void GatherMoved(ref WideContact w, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref BodyLanes l,
             out Vector<float> s0, out Vector<float> s1, out Vector<float> s2, out Vector<float> s3)
         {
-            Gather(bodies, laneBodies, groupOffset, ref l, true, true);
+            WideBodies.Gather(bodies, laneBodies, groupOffset, ref l, true, true);
             Vector<float> drift = Drift(w.Normal, l);
             s0 = Separation(w.P0, drift, l);
             s1 = Separation(w.P1, drift, l);
@@ -389,21 +175,20 @@ namespace Fulcrum.Dynamics
         // which stored their separations; the relaxing pass follows the position update and
         // gathers the motion itself.
         [MethodImpl(MethodImplOptions.NoInlining)]
-        static void Solve(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, in SoftLanes soft,
-            float invH, float maxPushSpeed, bool useBias, ref Lanes l)
+        static void Solve(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, in StepLanes soft,
+            bool useBias, ref BodyLanes l)
         {
             Vector<float> s0, s1, s2, s3;
             if (useBias)
             {
-                Gather(bodies, laneBodies, groupOffset, ref l, true, false);
+                WideBodies.Gather(bodies, laneBodies, groupOffset, ref l, true, false);
                 s0 = w.P0.Current;
                 s1 = w.P1.Current;
                 s2 = w.P2.Current;
                 s3 = w.P3.Current;
             }
             else GatherMoved(ref w, bodies, laneBodies, groupOffset, ref l, out s0, out s1, out s2, out s3);
-            var inverseStep = new Vector<float>(invH);
-            var maxPush = new Vector<float>(-maxPushSpeed);
+            Vector<float> inverseStep = soft.InverseStep, maxPush = soft.MaxPush;
             // A body that cannot move makes the contact stiffer (ContactSolver.Prepare).
             var fixedBody = Vector.BitwiseOr(Vector.Equals(Vector.AsVectorInt32(l.FlagA), Vector<int>.Zero),
                 Vector.Equals(Vector.AsVectorInt32(l.FlagB), Vector<int>.Zero));
@@ -466,7 +251,7 @@ namespace Fulcrum.Dynamics
             WideVector3 spin = WideVector3.Scale(w.Normal, twist - oldTwist);
             l.WA.Subtract(l.IA.Transform(spin));
             l.WB.Add(l.IB.Transform(spin));
-            Scatter(bodies, laneBodies, groupOffset, ref l);
+            WideBodies.Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
         // TangentBasis.Build, lane-wise.
@@ -513,7 +298,7 @@ namespace Fulcrum.Dynamics
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<int> SolvePair(ref WidePoint p1, ref WidePoint p2, Vector<float> k11, Vector<float> k12, Vector<float> k22, int bit1, int bit2,
             in WideVector3 n, Vector<float> bias1, Vector<float> gamma1, Vector<float> bias2, Vector<float> gamma2,
-            ref Vector<int> loaded, out Vector<float> vn1, out Vector<float> vn2, ref Lanes l)
+            ref Vector<int> loaded, out Vector<float> vn1, out Vector<float> vn2, ref BodyLanes l)
         {
             Vector<float> zero = Vector<float>.Zero;
 
@@ -573,10 +358,10 @@ namespace Fulcrum.Dynamics
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        static void RefreshApproach(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref Lanes l)
+        static void RefreshApproach(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, ref BodyLanes l)
         {
             if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, ref l, false, false);
+            WideBodies.Gather(bodies, laneBodies, groupOffset, ref l, false, false);
             Refresh(w.P0, ref impact.P0, w.Loaded, 1, w.Normal, l);
             Refresh(w.P1, ref impact.P1, w.Loaded, 2, w.Normal, l);
             Refresh(w.P2, ref impact.P2, w.Loaded, 4, w.Normal, l);
@@ -586,26 +371,26 @@ namespace Fulcrum.Dynamics
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         static Vector<int> IsLoaded(Vector<int> loaded, int bit) => Vector.Equals(Vector.BitwiseAnd(loaded, new Vector<int>(bit)), new Vector<int>(bit));
 
-        static void Refresh(in WidePoint p, ref WideImpactPoint i, Vector<int> loaded, int bit, in WideVector3 n, in Lanes l)
+        static void Refresh(in WidePoint p, ref WideImpactPoint i, Vector<int> loaded, int bit, in WideVector3 n, in BodyLanes l)
         {
             i.RelativeVelocity = WideVector3.Select(IsLoaded(loaded, bit), i.RelativeVelocity, RowVelocity(p.AngularA, p.AngularB, n, l));
         }
 
         [MethodImpl(MethodImplOptions.NoInlining)]
-        static void ApplyRestitution(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold, ref Lanes l)
+        static void ApplyRestitution(ref WideContact w, ref WideImpact impact, SolverBody[] bodies, int[] laneBodies, int groupOffset, float threshold, ref BodyLanes l)
         {
             if (Vector.EqualsAll(impact.Restitution, Vector<float>.Zero)) return;
-            Gather(bodies, laneBodies, groupOffset, ref l, true, false);
+            WideBodies.Gather(bodies, laneBodies, groupOffset, ref l, true, false);
             var limit = new Vector<float>(-threshold);
             Restitute(ref w.P0, impact.P0, impact.Restitution, w.Loaded, 1, w.Normal, limit, ref l);
             Restitute(ref w.P1, impact.P1, impact.Restitution, w.Loaded, 2, w.Normal, limit, ref l);
             Restitute(ref w.P2, impact.P2, impact.Restitution, w.Loaded, 4, w.Normal, limit, ref l);
             Restitute(ref w.P3, impact.P3, impact.Restitution, w.Loaded, 8, w.Normal, limit, ref l);
-            Scatter(bodies, laneBodies, groupOffset, ref l);
+            WideBodies.Scatter(bodies, laneBodies, groupOffset, ref l);
         }
 
         static void Restitute(ref WidePoint p, in WideImpactPoint i, Vector<float> e, Vector<int> loaded, int bit, in WideVector3 n,
-            Vector<float> limit, ref Lanes l)
+            Vector<float> limit, ref BodyLanes l)
         {
             Vector<float> zero = Vector<float>.Zero;
             // As ContactSolver.ApplyRestitution: impacts of this substep only (nothing applied

@@ -4,19 +4,21 @@ using System.Threading;
 namespace Fulcrum.Dynamics
 {
     /// <summary>
-    /// A fixed set of background threads that run one <see cref="IRangeJob"/> at a time with
-    /// the caller, splitting its range into chunks taken in order from a shared counter.
+    /// The world's own <see cref="IParallelScheduler"/>, for the solver, the narrow phase and
+    /// the soft bodies alike: a fixed set of background threads that run one
+    /// <see cref="IParallelJob"/> at a time with the caller, splitting its range into chunks
+    /// taken in order from a shared counter.
     /// <see cref="For"/> returns when every chunk is done, so a sequence of calls acts as a
     /// sequence of barriers (one per colour batch). Nothing is allocated per call: the job is
     /// an object the caller keeps, and the workers spin briefly, then sleep on an event.
     /// The result never depends on which thread ran which chunk as long as the chunks of one
     /// call write disjoint data, which colouring guarantees for the solver.
     /// </summary>
-    internal sealed class WorkerPool
+    internal sealed class WorkerPool : IParallelScheduler
     {
         readonly Thread[] _threads;
         readonly ManualResetEventSlim _wake = new ManualResetEventSlim(false);
-        IRangeJob? _job;
+        IParallelJob? _job;
         int _start, _end, _chunk, _chunkCount;
         // Generation (high 32 bits) and next chunk (low 32): a thread still busy with an older
         // call sees the generation change and can never take a chunk of the new one.
@@ -31,7 +33,7 @@ namespace Fulcrum.Dynamics
             _threads = new Thread[workers];
             for (int i = 0; i < workers; i++)
             {
-                _threads[i] = new Thread(WorkerLoop) { IsBackground = true, Name = "Fulcrum solver " + (i + 1) };
+                _threads[i] = new Thread(WorkerLoop) { IsBackground = true, Name = "Fulcrum worker " + (i + 1) };
                 _threads[i].Start();
             }
         }
@@ -53,7 +55,7 @@ namespace Fulcrum.Dynamics
         /// Runs <paramref name="job"/> over [<paramref name="start"/>, <paramref name="end"/>) in
         /// chunks of at least <paramref name="minChunk"/> items; small ranges run on the caller.
         /// </summary>
-        public void For(IRangeJob job, int start, int end, int minChunk)
+        public void For(IParallelJob job, int start, int end, int minChunk)
         {
             int count = end - start;
             if (count <= 0) return;
@@ -97,7 +99,7 @@ namespace Fulcrum.Dynamics
                 int c = (int)(ticket & 0xFFFFFFFF);
                 if (c >= _chunkCount) return;
                 if (Interlocked.CompareExchange(ref _ticket, ticket + 1, ticket) != ticket) continue;
-                IRangeJob job = _job!;
+                IParallelJob job = _job!;
                 int s = _start + c * _chunk;
                 job.Execute(s, Math.Min(_end, s + _chunk));
                 Interlocked.Decrement(ref _remaining);

@@ -1,11 +1,10 @@
 using System;
 using System.Numerics;
-using Fulcrum.Collision;
 using Fulcrum.Mathematics;
 
-namespace Fulcrum
+namespace Fulcrum.Collision
 {
-    public sealed partial class World
+    internal sealed partial class NarrowPhase
     {
         // Manifold reuse, after Jolt's body-pair cache: when the pair function runs, each
         // point is also stored as its two surface points in the shapes' own frames, with the
@@ -24,13 +23,13 @@ namespace Fulcrum
             // The stored points were filtered by the speculative distance of their run; a
             // point dropped then could be needed now only if the bound grew. A tenth of the
             // base margin of growth cannot make a dropped point (gap > base) close in this step.
-            if (speculative > ct.ReuseSpeculative + 0.1f * SpeculativeBase) return false;
+            if (speculative > ct.ReuseSpeculative + 0.1f * _in.SpeculativeBase) return false;
             bool fromB = (ct.Flags & ContactFlags.ReuseFromB) != 0;
             Vector3 position;
             Quaternion rotation;
             if (fromB) RelativePose(poseB, poseA, out position, out rotation);
             else RelativePose(poseA, poseB, out position, out rotation);
-            float d = _settings.ManifoldReuseDistance;
+            float d = _in.ReuseDistance;
             float moved = Vector3.DistanceSquared(position, ct.ReusePosition);
             if (moved > d * d) return false;
             // |cos(half the angle between the two relative rotations)|.
@@ -42,11 +41,11 @@ namespace Fulcrum
             // it, cannot have come down to touch (a long plank tilting 2 degrees would swing
             // its far end 14 cm).
             float sinHalf = MathF.Sqrt(MathF.Max(0f, 1f - cosHalf * cosHalf));
-            float radius = fromB ? _shapeRadius[ct.ShapeA] : _shapeRadius[ct.ShapeB];
-            return MathF.Sqrt(moved) + 2f * radius * sinHalf <= 0.5f * SpeculativeBase;
+            float radius = fromB ? _in.ShapeRadius[ct.ShapeA] : _in.ShapeRadius[ct.ShapeB];
+            return MathF.Sqrt(moved) + 2f * radius * sinHalf <= 0.5f * _in.SpeculativeBase;
         }
 
-        bool ManifoldReuseEnabled => _settings.ManifoldReuseDistance > 0 && _settings.ManifoldReuseAngle > 0;
+        bool ReuseEnabled => _in.ReuseDistance > 0 && _in.ReuseAngle > 0;
 
         // cos(ManifoldReuseAngle / 2), refreshed at the start of each narrow phase.
         float _reuseCosHalfAngle = 1;
@@ -61,7 +60,7 @@ namespace Fulcrum
         // Stores the manifolds just written by WriteManifolds in the shapes' frames.
         void RememberManifolds(ref Contact ct, float speculative, in Pose poseA, in Pose poseB)
         {
-            ContactGraph g = ContactGraph;
+            ContactGraph g = Graph;
             Mat3 ra = Mat3.FromQuaternion(poseA.Rotation), rb = Mat3.FromQuaternion(poseB.Rotation);
             Vector3 d = poseB.Position - poseA.Position;
             for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
@@ -90,7 +89,7 @@ namespace Fulcrum
             }
             // Track the smaller shape in the larger one's frame: a rotation then moves the
             // points that matter by at most the smaller radius times the angle.
-            bool fromB = _shapeRadius[ct.ShapeA] < _shapeRadius[ct.ShapeB];
+            bool fromB = _in.ShapeRadius[ct.ShapeA] < _in.ShapeRadius[ct.ShapeB];
             if (fromB) RelativePose(poseB, poseA, out ct.ReusePosition, out ct.ReuseRotation);
             else RelativePose(poseA, poseB, out ct.ReusePosition, out ct.ReuseRotation);
             ct.ReuseSpeculative = speculative;
@@ -104,16 +103,16 @@ namespace Fulcrum
         // point drifted past the speculative distance: the caller then runs the pair function.
         bool ReuseManifolds(ref Contact ct, float speculative, in Pose poseA, in Pose poseB)
         {
-            ContactGraph g = ContactGraph;
-            ShapeStorage s = Shapes;
+            ContactGraph g = Graph;
+            ShapeStorage s = _in.Shapes;
             int sa = ct.ShapeA, sb = ct.ShapeB;
             float friction = Combine.Values(s.Friction[sa], s.FrictionCombine[sa], s.Friction[sb], s.FrictionCombine[sb]);
             float restitution = Combine.Values(s.Restitution[sa], s.RestitutionCombine[sa], s.Restitution[sb], s.RestitutionCombine[sb]);
             // Relative to B's origin throughout (see RememberManifolds on rounding).
             Mat3 ra = Mat3.FromQuaternion(poseA.Rotation), rb = Mat3.FromQuaternion(poseB.Rotation);
             Vector3 d = poseB.Position - poseA.Position;
-            Vector3 toA = poseB.Position - Bodies.Center[ct.BodyA], toB = poseB.Position - Bodies.Center[ct.BodyB];
-            float slop = _settings.LinearSlop;
+            Vector3 toA = poseB.Position - _in.Bodies.Center[ct.BodyA], toB = poseB.Position - _in.Bodies.Center[ct.BodyB];
+            float slop = _in.LinearSlop;
             Vector3 sum = Vector3.Zero;
             int total = 0, touching = 0;
             float deepest = 0;
@@ -143,14 +142,14 @@ namespace Fulcrum
                     total++;
                 }
             }
-            _stepTouching += touching;
-            _stepMaxPenetration = MathF.Max(_stepMaxPenetration, deepest);
+            Touching += touching;
+            MaxPenetration = MathF.Max(MaxPenetration, deepest);
             if (total > 0)
             {
                 Vector3 at = poseB.Position + sum / total;
                 ct.RelativeVelocity = PointVelocity(ct.BodyB, at) - PointVelocity(ct.BodyA, at);
             }
-            StatReusedManifoldPairs++;
+            ReusedPairs++;
             return true;
         }
 
