@@ -200,7 +200,7 @@ namespace Fulcrum
         {
             ContactGraph g = ContactGraph;
             if (_narrowSlot.Length < g.Contacts.Length) _narrowSlot = new int[g.Contacts.Length];
-            NarrowPhaseJob job = _narrowJob ??= new NarrowPhaseJob(this);
+            NarrowPhaseJob job = NarrowJob();
             job.Count = 0;
             job.Dt = dt;
             bool reuse = ManifoldReuseEnabled;
@@ -226,6 +226,17 @@ namespace Fulcrum
             job.Run(SolverThreads());
             ParallelNarrowPhaseSteps++;
             return true;
+        }
+
+        // The parallel narrow phase's job, made on first use with the capacity World.Reserve asked for.
+        NarrowPhaseJob NarrowJob()
+        {
+            if (_narrowJob == null)
+            {
+                _narrowJob = new NarrowPhaseJob(this);
+                _narrowJob.Reserve(_reservedPairs, _settings.Threads);
+            }
+            return _narrowJob;
         }
 
         // The pair function of contact c as the serial pass runs it (pure: reads poses,
