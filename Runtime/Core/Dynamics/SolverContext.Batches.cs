@@ -193,6 +193,11 @@ namespace Fulcrum.Dynamics
                 _wideSlots = new int[8 * lanes];
             }
             if (_rejected.Length < nm) _rejected = new int[Math.Max(16, 2 * nm)];
+            if (_groupRejects.Length < lanes)
+            {
+                _groupRejects = new int[2 * lanes];
+                _groupRejectCount = new int[2 * groups];
+            }
             Array.Fill(_wideManifold, -1, 0, lanes);
             Array.Clear(_wideBodies, 0, 2 * lanes);
             for (int k = 0; k < nm; k++)
@@ -206,17 +211,23 @@ namespace Fulcrum.Dynamics
                 _wideBodies[2 * lane] = IndexOf(m.BodyA);
                 _wideBodies[2 * lane + 1] = IndexOf(m.BodyB);
             }
+            // Every group prepares on its own, split between threads (GroupJob); the rejects
+            // are then gathered colour by colour in group order, as one serial loop lists them.
+            _groupJob.WarmContacts = warmContacts;
+            _groupJob.Restitution = false;
+            RunGroups(GroupPass.PrepareWide, groups, MinGroupChunk);
+            HasRestitution |= _groupJob.Restitution;
             int rejected = 0;
             for (int c = 0; c < Buckets; c++)
             {
                 _rejectedStart[c] = rejected;
-                HasRestitution |= ContactSolverWide.Prepare(_wide, _wideImpact, _wideStart[c], _wideStart[c + 1], _wideManifold, _wideBodies,
-                    _wideSlots, _manifolds, Bodies, warmContacts, _rejected, ref rejected);
-                for (int r = _rejectedStart[c]; r < rejected; r++)
-                {
-                    _contactCursor[c]++;
-                    _pointCursor[c] += ContactManifold.MaxPoints;
-                }
+                for (int g = _wideStart[c]; g < _wideStart[c + 1]; g++)
+                    for (int r = 0; r < _groupRejectCount[g]; r++)
+                    {
+                        _rejected[rejected++] = _groupRejects[g * width + r];
+                        _contactCursor[c]++;
+                        _pointCursor[c] += ContactManifold.MaxPoints;
+                    }
             }
             _rejectedStart[Buckets] = rejected;
         }

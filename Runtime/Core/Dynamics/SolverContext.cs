@@ -54,6 +54,7 @@ namespace Fulcrum.Dynamics
         JointSolver.StepParameters _jointParameters;
         readonly ColorJob _colorJob;
         readonly BodyJob _bodyJob;
+        readonly GroupJob _groupJob;
         readonly ShockPropagation _shock = new ShockPropagation();
 
         // Contacts of each colour not taken by the wide path, by index into Contacts.
@@ -72,6 +73,9 @@ namespace Fulcrum.Dynamics
         int[] _wideBodies = Array.Empty<int>();
         int[] _wideSlots = Array.Empty<int>();
         int[] _wideSource = Array.Empty<int>();
+        // The wide prepare's rejects, a lane-sized window per group, and how many each group has.
+        int[] _groupRejects = Array.Empty<int>();
+        int[] _groupRejectCount = Array.Empty<int>();
 #endif
 
         /// <summary>Wide groups of the last step (for tests and profiling).</summary>
@@ -87,6 +91,7 @@ namespace Fulcrum.Dynamics
         {
             _colorJob = new ColorJob(this);
             _bodyJob = new BodyJob(this);
+            _groupJob = new GroupJob(this);
         }
 
         /// <summary>The (sub)step of the current solve, s.</summary>
@@ -175,6 +180,8 @@ namespace Fulcrum.Dynamics
             if (_wideBodies.Length < 2 * lanes) _wideBodies = new int[2 * lanes];
             if (_wideSlots.Length < 4 * lanes) _wideSlots = new int[4 * lanes];
             if (_wideSource.Length < lanes) _wideSource = new int[lanes];
+            if (_groupRejects.Length < lanes) _groupRejects = new int[lanes];
+            if (_groupRejectCount.Length < groups) _groupRejectCount = new int[groups];
 #endif
         }
 
@@ -283,7 +290,7 @@ namespace Fulcrum.Dynamics
                 }
             }
 #if NET
-            for (int g = 0; g < _wideGroups; g++) ContactSolverWide.Accumulate(_wide[g], ref _wideImpact[g]);
+            RunGroups(GroupPass.Accumulate, _wideGroups, 4 * MinGroupChunk);
 #endif
         }
 
@@ -300,9 +307,8 @@ namespace Fulcrum.Dynamics
                 ContactSolver.Store(c, Points, ref _manifolds[c.Manifold], scale);
             }
 #if NET
-            int width = ContactSolverWide.Width;
-            for (int g = 0; g < _wideGroups; g++)
-                ContactSolverWide.Store(_wide[g], _wideImpact[g], _wideSlots, _wideManifold, g * width, _manifolds, scale);
+            _groupJob.Scale = scale;
+            RunGroups(GroupPass.StoreImpulses, _wideGroups, MinGroupChunk);
 #endif
             float maxError = 0;
             for (int k = 0; k < JointCount; k++)

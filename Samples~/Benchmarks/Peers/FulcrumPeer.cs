@@ -72,6 +72,9 @@ namespace Fulcrum.Benchmarks.Peers
 
         public void Step(float dt) => _world!.Step(dt);
 
+        /// <summary>The per-stage times of the last step (World.LastStepProfile).</summary>
+        public StepProfile LastStepProfile => _world!.LastStepProfile;
+
         public void ReadPose(int box, out Vector3 position, out Quaternion rotation)
         {
             BodyRef body = _world!.GetBody(_bodies[box]);

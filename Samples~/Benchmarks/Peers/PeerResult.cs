@@ -24,6 +24,10 @@ namespace Fulcrum.Benchmarks.Peers
         public double WallMeanMs { get; init; }
         /// <summary>Median wall time of a timed step, ms (includes time slices lost to other processes).</summary>
         public double WallMedianMs { get; init; }
+        /// <summary>CPU time of the whole process per timed step (mean, every thread), ms; NaN where not measured.</summary>
+        public double ProcessCpuMs { get; init; }
+        /// <summary>Fulcrum's own per-stage wall times (mean per step, ms, indexed by StepStage), or null for a peer.</summary>
+        public double[]? StageMs { get; init; }
         /// <summary>Managed bytes the stepping thread allocated per timed step (mean).</summary>
         public double BytesPerStep { get; init; }
         /// <summary>

@@ -69,11 +69,15 @@ namespace Fulcrum.Benchmarks.Peers
             var drift = new double[phases];
             var sink = new double[phases];
             var endSpeed = new double[phases];
+            var processCpu = new double[phases];
+            var stages = new double[phases][];
+            var fulcrum = engine as FulcrumPeer;
             for (int f = 0; f < phases; f++)
             {
                 ms[f] = new double[scene.Phases[f].Steps];
                 wallMs[f] = new double[scene.Phases[f].Steps];
                 drift[f] = sink[f] = double.NaN;
+                stages[f] = new double[StepProfile.StageCount];
             }
             var previous = new Vector3[scene.Boxes.Count];
             for (int i = 0; i < previous.Length; i++) previous[i] = scene.Boxes[i].Center;
@@ -90,11 +94,13 @@ namespace Fulcrum.Benchmarks.Peers
                 // (nothing between the steps allocates).
                 if (phase >= 0 && timed == scene.Phases[phase].Start) processAllocated[phase] = -GC.GetTotalAllocatedBytes(true);
                 long bytes = GC.GetAllocatedBytesForCurrentThread();
+                double processStart = ThreadClock.ProcessNowMs();
                 double cpuStart = ThreadClock.NowMs();
                 long start = Stopwatch.GetTimestamp();
                 engine.Step(settings.Dt);
                 long end = Stopwatch.GetTimestamp();
                 double cpuEnd = ThreadClock.NowMs();
+                double processEnd = ThreadClock.ProcessNowMs();
                 if (phase < 0)
                 {
                     ReadPoses(engine, scene, previous, groundTop, ref finite, out _, out _);
@@ -105,6 +111,12 @@ namespace Fulcrum.Benchmarks.Peers
                 double wall = (end - start) * 1000.0 / Stopwatch.Frequency;
                 ms[phase][k] = cpuTime ? cpuEnd - cpuStart : wall;
                 wallMs[phase][k] = wall;
+                processCpu[phase] += processEnd - processStart;
+                if (fulcrum != null)
+                {
+                    StepProfile profile = fulcrum.LastStepProfile;
+                    for (int stage = 0; stage < StepProfile.StageCount; stage++) stages[phase][stage] += profile[(StepStage)stage];
+                }
                 ReadPoses(engine, scene, previous, groundTop, ref finite, out double penetration, out double moved);
                 maxPenetration[phase] = Math.Max(maxPenetration[phase], penetration);
                 if (k == scene.Phases[phase].Steps - 1)
@@ -144,6 +156,8 @@ namespace Fulcrum.Benchmarks.Peers
                     MedianMs = Percentile(ms[f], 0.5),
                     P95Ms = Percentile(ms[f], 0.95),
                     WallMeanMs = steps > 0 ? wallSum / steps : double.NaN,
+                    ProcessCpuMs = steps > 0 ? processCpu[f] / steps : double.NaN,
+                    StageMs = fulcrum == null || steps == 0 ? null : Array.ConvertAll(stages[f], t => t / steps),
                     WallMedianMs = Percentile(wallMs[f], 0.5),
                     BytesPerStep = steps > 0 ? (double)allocated[f] / steps : 0,
                     ProcessBytesPerStep = steps > 0 ? (double)processAllocated[f] / steps : 0,

@@ -17,7 +17,7 @@ namespace Fulcrum.Benchmarks.Peers
         {
             var table = new List<string[]>
             {
-                new[] { "engine", "scene", "bodies", "clock", "mean ms", "median ms", "p95 ms", "x Fulcrum", "speed-up", "B/step", "all B/step", "drift mm", "sink mm", "ground pen mm", "speed mm/s", "finite" },
+                new[] { "engine", "scene", "bodies", "clock", "mean ms", "median ms", "p95 ms", "x Fulcrum", "speed-up", "proc cpu ms", "B/step", "all B/step", "drift mm", "sink mm", "ground pen mm", "speed mm/s", "finite" },
             };
             List<PeerResult> first = runs[0];
             for (int r = 0; r < first.Count; r++)
@@ -43,13 +43,18 @@ namespace Fulcrum.Benchmarks.Peers
                 {
                     row.Engine, row.Scene, row.Bodies.ToString(CultureInfo.InvariantCulture), row.CpuTime ? "cpu" : "wall",
                     Range(runs, r, x => x.MeanMs, "F3"), Range(runs, r, x => x.MedianMs, "F3"), Range(runs, r, x => x.P95Ms, "F3"),
-                    Range(ratio, "F2"), Range(speedUp, "F2"),
+                    Range(ratio, "F2"), Range(speedUp, "F2"), Range(runs, r, x => x.ProcessCpuMs, "F3"),
                     Range(runs, r, x => x.BytesPerStep, "F0"), Range(runs, r, x => x.ProcessBytesPerStep, "F0"),
                     Range(runs, r, x => x.Drift * 1000, "F1"), Range(runs, r, x => x.Sink * 1000, "F1"),
                     Range(runs, r, x => x.MaxGroundPenetration * 1000, "F1"), Range(runs, r, x => x.EndSpeed * 1000, "F1"),
                     finite ? "yes" : "NO",
                 });
             }
+            Write(output, table);
+        }
+
+        static void Write(TextWriter output, List<string[]> table)
+        {
             var widths = new int[table[0].Length];
             foreach (string[] line in table)
                 for (int c = 0; c < line.Length; c++) widths[c] = Math.Max(widths[c], line[c].Length);
@@ -60,6 +65,30 @@ namespace Fulcrum.Benchmarks.Peers
                     text.Append(c < 2 ? line[c].PadRight(widths[c] + 2) : line[c].PadLeft(widths[c]) + "  ");
                 output.WriteLine(text.ToString().TrimEnd());
             }
+        }
+
+        /// <summary>
+        /// Fulcrum's rows split by stage (World.LastStepProfile: wall time inside the step, mean
+        /// ms per step), ranged over runs like the main table.
+        /// </summary>
+        public static void PrintStages(TextWriter output, List<List<PeerResult>> runs)
+        {
+            var header = new List<string> { "engine", "scene" };
+            for (int stage = 0; stage < StepProfile.StageCount; stage++) header.Add(((StepStage)stage).ToString());
+            var table = new List<string[]> { header.ToArray() };
+            List<PeerResult> first = runs[0];
+            for (int r = 0; r < first.Count; r++)
+            {
+                if (first[r].StageMs == null) continue;
+                var line = new List<string> { first[r].Engine, first[r].Scene };
+                for (int stage = 0; stage < StepProfile.StageCount; stage++)
+                {
+                    int s = stage;
+                    line.Add(Range(runs, r, x => x.StageMs![s], "F3"));
+                }
+                table.Add(line.ToArray());
+            }
+            Write(output, table);
         }
 
         // "Fulcrum 2 threads" -> "Fulcrum": the same engine's 1-thread row.

@@ -43,7 +43,7 @@ namespace Fulcrum.Benchmarks.Peers
                 ? "clock: 1-thread rows (cpu) time the stepping thread's CPU time, so time slices lost to other processes are not counted; rows on several threads (wall) time wall time"
                 : "clock: wall time for every row");
             output.WriteLine("mean/median/p95: of the timed steps; x Fulcrum: mean over the Fulcrum row's mean on the same clock (1-thread rows: CPU; threaded rows: wall), same run;");
-            output.WriteLine("speed-up: the same engine's 1-thread wall mean over this row's wall mean; B/step: bytes the stepping thread allocated per step; all B/step: the whole process (runtime background threads too)");
+            output.WriteLine("speed-up: the same engine's 1-thread wall mean over this row's wall mean; proc cpu ms: CPU time of all the process's threads per step (mean); B/step: bytes the stepping thread allocated per step; all B/step: the whole process (runtime background threads too)");
             output.WriteLine("drift: top box's x/z distance from its start at the phase's end; sink: its start y - end y; ground pen: deepest corner below the ground in the phase; speed: mean box speed in the phase's last step");
 
             IReadOnlyList<Func<IPeerEngine>> engines = PeerRoster.Engines(threads.Value);
@@ -86,6 +86,9 @@ namespace Fulcrum.Benchmarks.Peers
                 output.WriteLine($"ranges over {runs.Value} runs (lowest-highest):");
                 PeerTable.Print(output, all);
             }
+            output.WriteLine();
+            output.WriteLine("Fulcrum by stage (World.LastStepProfile, wall ms per step, mean" + (runs.Value > 1 ? ", range over runs" : "") + "):");
+            PeerTable.PrintStages(output, all);
         }
 
         // Program passes every "--" argument through untouched, so options ride along as --name=value.
