@@ -15,7 +15,8 @@ namespace Fulcrum.Benchmarks.Peers
     /// in an order that alternates between runs and scenes, so a slow spell of a loaded machine
     /// does not land on one engine; with --runs=N the summary gives each figure's range over runs.
     /// Options: --runs=N (default 1), --threads=T (default 2), --substeps=S --iterations=I
-    /// (default: Fulcrum's defaults).
+    /// --relax=R (default: Fulcrum's defaults; relax passes apply to Fulcrum and Jitter2),
+    /// --scene=NAME (only the scenes whose name starts with NAME: tower, pyramid, pile).
     /// </summary>
     public sealed class PeersBenchmark : IBenchmark
     {
@@ -29,12 +30,23 @@ namespace Fulcrum.Benchmarks.Peers
             int? iterations = Option("--iterations=", WorldSettings.Default.Iterations, output);
             int? runs = Option("--runs=", 1, output);
             int? threads = Option("--threads=", 2, output);
-            if (substeps == null || iterations == null || runs == null || threads == null) return;
-            var settings = new PeerSettings { Substeps = substeps.Value, Iterations = iterations.Value };
+            int? relax = Option("--relax=", WorldSettings.Default.RelaxIterations, output, min: 0);
+            if (substeps == null || iterations == null || runs == null || threads == null || relax == null) return;
+            var settings = new PeerSettings { Substeps = substeps.Value, Iterations = iterations.Value, RelaxIterations = relax.Value };
             PeerScene[] scenes = quick
                 ? new[] { PeerScene.Tower(20, 30, 120), PeerScene.Pyramid(6, 10, 60), PeerScene.PilePhases(5, 4, 10, 60, 60, 60) }
                 : new[] { PeerScene.Tower(20, 60, 600), PeerScene.Pyramid(20, 30, 270), PeerScene.PilePhases(12, 14, 30, 270, 300, 270) };
 
+            string? only = TextOption("--scene=");
+            if (only != null)
+            {
+                scenes = Array.FindAll(scenes, scene => scene.Name.StartsWith(only, StringComparison.Ordinal));
+                if (scenes.Length == 0)
+                {
+                    output.WriteLine($"--scene={only} names no scene (tower, pyramid, pile); nothing was run.");
+                    return;
+                }
+            }
             string? hint = PeerRoster.MissingHint();
             if (hint != null) output.WriteLine(hint);
             output.WriteLine(string.Create(CultureInfo.InvariantCulture,
@@ -93,14 +105,21 @@ namespace Fulcrum.Benchmarks.Peers
 
         // Program passes every "--" argument through untouched, so options ride along as --name=value.
         // A bad value prints one line and returns null: nothing runs.
-        static int? Option(string prefix, int fallback, TextWriter output)
+        static string? TextOption(string prefix)
+        {
+            foreach (string arg in Environment.GetCommandLineArgs())
+                if (arg.StartsWith(prefix, StringComparison.Ordinal)) return arg.Substring(prefix.Length);
+            return null;
+        }
+
+        static int? Option(string prefix, int fallback, TextWriter output, int min = 1)
         {
             foreach (string arg in Environment.GetCommandLineArgs())
                 if (arg.StartsWith(prefix, StringComparison.Ordinal))
                 {
-                    if (int.TryParse(arg.AsSpan(prefix.Length), NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) && value >= 1)
+                    if (int.TryParse(arg.AsSpan(prefix.Length), NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) && value >= min)
                         return value;
-                    output.WriteLine($"{prefix}N needs an integer >= 1, got '{arg}'; nothing was run.");
+                    output.WriteLine($"{prefix}N needs an integer >= {min}, got '{arg}'; nothing was run.");
                     return null;
                 }
             return fallback;
