@@ -14,7 +14,7 @@ namespace Fulcrum.Benchmarks.Peers
     /// (collapse, settled heap). Each run measures every row of a scene before the next scene,
     /// in an order that alternates between runs and scenes, so a slow spell of a loaded machine
     /// does not land on one engine; with --runs=N the summary gives each figure's range over runs.
-    /// Options: --runs=N (default 1), --threads=T (default 2), --substeps=S --iterations=I
+    /// Options (--name=value or --name value): --runs=N (default 1), --threads=T (default 2), --substeps=S --iterations=I
     /// --relax=R (default: Fulcrum's defaults; relax passes apply to Fulcrum and Jitter2),
     /// --scene=NAME (only the scenes whose name starts with NAME: tower, pyramid, pile).
     /// </summary>
@@ -103,26 +103,28 @@ namespace Fulcrum.Benchmarks.Peers
             PeerTable.PrintStages(output, all);
         }
 
-        // Program passes every "--" argument through untouched, so options ride along as --name=value.
+        // Program passes every "--" argument (and every number) through untouched, so options ride along.
         // A bad value prints one line and returns null: nothing runs.
+        // "--name=value", or "--name value" (prefix is "--name=").
         static string? TextOption(string prefix)
         {
-            foreach (string arg in Environment.GetCommandLineArgs())
-                if (arg.StartsWith(prefix, StringComparison.Ordinal)) return arg.Substring(prefix.Length);
+            string[] args = Environment.GetCommandLineArgs();
+            for (int i = 0; i < args.Length; i++)
+            {
+                if (args[i].StartsWith(prefix, StringComparison.Ordinal)) return args[i].Substring(prefix.Length);
+                if (args[i] == prefix.TrimEnd('=') && i + 1 < args.Length) return args[i + 1];
+            }
             return null;
         }
 
         static int? Option(string prefix, int fallback, TextWriter output, int min = 1)
         {
-            foreach (string arg in Environment.GetCommandLineArgs())
-                if (arg.StartsWith(prefix, StringComparison.Ordinal))
-                {
-                    if (int.TryParse(arg.AsSpan(prefix.Length), NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) && value >= min)
-                        return value;
-                    output.WriteLine($"{prefix}N needs an integer >= {min}, got '{arg}'; nothing was run.");
-                    return null;
-                }
-            return fallback;
+            string? text = TextOption(prefix);
+            if (text == null) return fallback;
+            if (int.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) && value >= min)
+                return value;
+            output.WriteLine($"{prefix}N needs an integer >= {min}, got '{text}'; nothing was run.");
+            return null;
         }
     }
 }
