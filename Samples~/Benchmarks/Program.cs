@@ -18,7 +18,8 @@ namespace Fulcrum.Benchmarks
                 .OrderBy(b => b.Name, StringComparer.Ordinal)
                 .ToList();
             bool quick = args.Contains("--quick");
-            var names = args.Where(a => !a.StartsWith("--", StringComparison.Ordinal)).ToList();
+            // A number is an option's value ("--runs 3"), never a benchmark name.
+            var names = args.Where(a => !a.StartsWith("--", StringComparison.Ordinal) && !int.TryParse(a, out _)).ToList();
             if (names.Count == 0)
             {
                 Console.WriteLine("Benchmarks (run with a name, or 'all'; add --quick for a smoke run):");

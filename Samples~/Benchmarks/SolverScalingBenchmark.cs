@@ -36,8 +36,10 @@ namespace Fulcrum.Benchmarks
 
             output.WriteLine($"settle {settle} steps ({pileSettle} for piles and ragdolls), {rewarm} untimed steps after each settings switch, {measured} timed steps, dt 1/60 s, sleeping off; bytes/step = GC.GetAllocatedBytesForCurrentThread over the timed window (all threads in brackets)");
             output.WriteLine();
-            output.WriteLine("| scene | bodies | joints | setting | threads | manifolds | ms/step median | p95 | ms per 1k bodies | bytes/step |");
-            output.WriteLine("|---|---|---|---|---|---|---|---|---|---|");
+            output.WriteLine("mean: mean wall ms per step; cpu: the process's CPU ms per step (every thread; NaN where the OS does not give it); stages: mean wall ms per step of broad phase / narrow phase / islands / solve / sleep and events (World.LastStepProfile)");
+            output.WriteLine();
+            output.WriteLine("| scene | bodies | joints | setting | threads | manifolds | ms/step median | p95 | ms per 1k bodies | bytes/step | mean | cpu | stages b / n / i / s / e |");
+            output.WriteLine("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
             Scene(output, $"pyramid {pyramidBase}", w => Pyramid(w, pyramidBase, 0f), settle, rewarm, measured, all);
             Scene(output, $"{pyramids} pyramids of 20", w => { for (int p = 0; p < pyramids; p++) Pyramid(w, 20, 2f * (p - 0.5f * (pyramids - 1))); }, settle, rewarm, measured, all);
             Scene(output, $"pile {pile}", w => Pile(w, pile), pileSettle, rewarm, measured, all);
@@ -86,31 +88,42 @@ namespace Fulcrum.Benchmarks
             w.Settings = s;
             for (int n = 0; n < rewarm; n++) w.Step(Dt);
             Measurement m = Measure(w, measured);
-            output.WriteLine($"| {name} | {bodies} | {joints} | {label} | {threads} | {w.Contacts.ManifoldCount} | {m.Median:F2} | {m.P95:F2} | {1000.0 * m.Median / bodies:F2} | {m.Bytes} ({m.AllBytes}) |");
+            output.WriteLine($"| {name} | {bodies} | {joints} | {label} | {threads} | {w.Contacts.ManifoldCount} | {m.Median:F2} | {m.P95:F2} | {1000.0 * m.Median / bodies:F2} | {m.Bytes} ({m.AllBytes}) | {m.Mean:F2} | {m.Cpu:F2} | {m.Stages} |");
         }
 
         struct Measurement
         {
-            public double Median, P95;
+            public double Median, P95, Mean, Cpu;
             public long Bytes, AllBytes;
+            public string Stages;
         }
 
         static Measurement Measure(World w, int measured)
         {
             var ms = new double[measured];
+            var stages = new double[StepProfile.StageCount];
+            double sum = 0;
             long before = GC.GetAllocatedBytesForCurrentThread();
             long allBefore = GC.GetTotalAllocatedBytes(true);
+            double cpuBefore = Peers.ThreadClock.ProcessNowMs();
             for (int n = 0; n < measured; n++)
             {
                 long t0 = Stopwatch.GetTimestamp();
                 w.Step(Dt);
                 ms[n] = (Stopwatch.GetTimestamp() - t0) * 1000.0 / Stopwatch.Frequency;
+                sum += ms[n];
+                StepProfile profile = w.LastStepProfile;
+                for (int stage = 0; stage < stages.Length; stage++) stages[stage] += profile[(StepStage)stage];
             }
+            double cpu = (Peers.ThreadClock.ProcessNowMs() - cpuBefore) / measured;
             long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
             long allBytes = GC.GetTotalAllocatedBytes(true) - allBefore;
             Array.Sort(ms);
             return new Measurement
             {
+                Mean = sum / measured,
+                Cpu = cpu,
+                Stages = $"{stages[0] / measured:F2} / {stages[1] / measured:F2} / {stages[2] / measured:F2} / {stages[3] / measured:F2} / {stages[6] / measured:F2}",
                 Median = ms[measured / 2],
                 P95 = ms[Math.Min(measured - 1, measured * 95 / 100)],
                 Bytes = bytes / measured,

@@ -8,17 +8,26 @@ namespace Fulcrum.Tests.Solver
 {
     public class AllocationTests
     {
-        [TestCase(SolverType.Tgs, false)]
-        [TestCase(SolverType.Tgs, true)]
-        [TestCase(SolverType.Pgs, true)]
-        public void A_warm_step_with_contacts_and_every_joint_kind_allocates_nothing(SolverType solver, bool block)
+        [TestCase(SolverType.Tgs, false, 1)]
+        [TestCase(SolverType.Tgs, true, 1)]
+        [TestCase(SolverType.Pgs, true, 1)]
+        [TestCase(SolverType.Tgs, true, 2)]
+        [TestCase(SolverType.Pgs, true, 2)]
+        public void A_warm_step_with_contacts_and_every_joint_kind_allocates_nothing(SolverType solver, bool block, int threads)
         {
             WorldSettings s = Settings(solver);
             s.BlockSolver = block;
             s.EnableSleeping = false;
+            s.Threads = threads;
             var w = new World(s);
             Ground(w);
             Tower(w, 5);
+            // On threads, enough contacts that the solver's passes are split between them: a
+            // one-box-deep pyramid of 12 at the base, behind the rest.
+            if (threads > 1)
+                for (int row = 0; row < 12; row++)
+                    for (int i = 0; i < 12 - row; i++)
+                        Box(w, new Vector3(-0.5f * (11 - row) + i, 0.5f + row, -6), new Vector3(0.5f), 1f);
             BodyHandle a = Box(w, new Vector3(4, 3, 0), new Vector3(0.2f), 1f);
             BodyHandle b = Box(w, new Vector3(5, 3, 0), new Vector3(0.2f), 1f);
             BodyHandle c = Sphere(w, new Vector3(6, 3, 0), 0.2f, 1f);
@@ -43,6 +52,8 @@ namespace Fulcrum.Tests.Solver
                 w.Step(1f / 60f);
                 allocated += GC.GetAllocatedBytesForCurrentThread() - before;
             }
+            if (threads > 1) Assert.That(w.SolverPoolForTests!.SplitCalls, Is.GreaterThan(0), "the step's passes ran on the worker pool");
+            w.StopThreads();
             Assert.That(allocated, Is.EqualTo(0));
         }
     }

@@ -13,7 +13,7 @@ namespace Fulcrum.Collision
             ContactGraph g = Graph;
             BodyStorage bodies = _in.Bodies;
             if (_slot.Length < g.Contacts.Length) _slot = new int[g.Contacts.Length];
-            NarrowPhaseJob job = _job ??= new NarrowPhaseJob(this);
+            NarrowPhaseJob job = Job();
             job.Count = 0;
             bool reuse = ReuseEnabled;
             for (int k = 0; k < g.DenseCount; k++)

@@ -39,6 +39,8 @@ namespace Fulcrum.Collision
         // Parallel narrow phase (Threads > 1): the candidates' pair functions run on the worker
         // pool first; per contact slot, the candidate index + 1 (0: none).
         NarrowPhaseJob? _job;
+        // The largest pair count and thread count ReserveParallel was given.
+        int _reservedPairs, _reservedThreads;
         int[] _slot = Array.Empty<int>();
         // Fewer candidates than this are not worth a trip through the pool.
         const int MinParallelPairs = 32;
@@ -118,6 +120,31 @@ namespace Fulcrum.Collision
             if (_sortKeys.Length >= pairs) return;
             Array.Resize(ref _sortKeys, pairs);
             Array.Resize(ref _sortItems, pairs);
+        }
+
+        /// <summary>
+        /// Sizes the parallel pass's candidate slots and per-block buffers for
+        /// <paramref name="pairs"/> contacts on <paramref name="threads"/> threads (only with
+        /// more than one; the pairs are kept for a job made later, when threads are turned on).
+        /// </summary>
+        public void ReserveParallel(int pairs, int threads)
+        {
+            _reservedPairs = Math.Max(_reservedPairs, pairs);
+            _reservedThreads = Math.Max(_reservedThreads, threads);
+            if (threads <= 1) return;
+            Job().Reserve(_reservedPairs, threads);
+            if (_slot.Length < Graph.Contacts.Length) _slot = new int[Graph.Contacts.Length];
+        }
+
+        // The parallel pass's job, made on first use with the capacity ReserveParallel asked for.
+        NarrowPhaseJob Job()
+        {
+            if (_job == null)
+            {
+                _job = new NarrowPhaseJob(this);
+                if (_reservedThreads > 1) _job.Reserve(_reservedPairs, _reservedThreads);
+            }
+            return _job;
         }
 
         // Returns false when the contact was destroyed (its dense slot now holds another).

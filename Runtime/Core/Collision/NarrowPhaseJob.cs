@@ -53,6 +53,28 @@ namespace Fulcrum.Collision
             Count++;
         }
 
+        /// <summary>
+        /// Room for <paramref name="candidates"/> candidates and the per-block buffers of a pool
+        /// of <paramref name="threads"/> threads (<see cref="World.Reserve"/>), so that a step
+        /// growing into that count allocates nothing.
+        /// </summary>
+        public void Reserve(int candidates, int threads)
+        {
+            if (_contact.Length < candidates) Grow(candidates);
+            EnsureBuffers(BlocksFor(int.MaxValue, threads));
+        }
+
+        // A few blocks per thread balance uneven pairs (meshes, hulls) against boxes.
+        static int BlocksFor(int count, int threads) => threads <= 1 ? 1 : Math.Min(count, 4 * threads);
+
+        void EnsureBuffers(int blocks)
+        {
+            if (_buffers.Length >= blocks) return;
+            int old = _buffers.Length;
+            Array.Resize(ref _buffers, blocks);
+            for (int b = old; b < blocks; b++) _buffers[b] = new ContactBuffer();
+        }
+
         void Grow(int n)
         {
             Array.Resize(ref _contact, n);
@@ -70,14 +92,8 @@ namespace Fulcrum.Collision
         public void Run(IParallelScheduler? pool)
         {
             if (Count == 0) return;
-            // A few blocks per thread balance uneven pairs (meshes, hulls) against boxes.
-            int blocks = pool == null ? 1 : Math.Min(Count, 4 * pool.ThreadCount);
-            if (_buffers.Length < blocks)
-            {
-                int old = _buffers.Length;
-                Array.Resize(ref _buffers, blocks);
-                for (int b = old; b < blocks; b++) _buffers[b] = new ContactBuffer();
-            }
+            int blocks = BlocksFor(Count, pool == null ? 1 : pool.ThreadCount);
+            EnsureBuffers(blocks);
             _blocks = blocks;
             if (pool == null) Execute(0, blocks);
             else pool.For(this, 0, blocks, 1);

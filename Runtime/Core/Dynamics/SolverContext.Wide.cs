@@ -21,6 +21,9 @@ namespace Fulcrum.Dynamics
         int[] _wideBodies = Array.Empty<int>();
         int[] _wideSlots = Array.Empty<int>();
         int[] _wideSource = Array.Empty<int>();
+        // The wide prepare's rejects, a lane-sized window per group, and how many each group has.
+        int[] _groupRejects = Array.Empty<int>();
+        int[] _groupRejectCount = Array.Empty<int>();
 
         void ReserveWide(int manifolds)
         {
@@ -38,6 +41,8 @@ namespace Fulcrum.Dynamics
             if (_wideBodies.Length < 2 * lanes) _wideBodies = new int[2 * lanes];
             if (_wideSlots.Length < 4 * lanes) _wideSlots = new int[4 * lanes];
             if (_wideSource.Length < lanes) _wideSource = new int[lanes];
+            if (_groupRejects.Length < lanes) _groupRejects = new int[lanes];
+            if (_groupRejectCount.Length < groups) _groupRejectCount = new int[groups];
         }
 
         // Whether this step prepares the wide candidates straight from their manifolds (the
@@ -89,6 +94,11 @@ namespace Fulcrum.Dynamics
                 _wideSlots = new int[8 * lanes];
             }
             if (_rejected.Length < nm) _rejected = new int[Math.Max(16, 2 * nm)];
+            if (_groupRejects.Length < lanes)
+            {
+                _groupRejects = new int[2 * lanes];
+                _groupRejectCount = new int[2 * groups];
+            }
             Array.Fill(_wideManifold, -1, 0, lanes);
             Array.Clear(_wideBodies, 0, 2 * lanes);
             for (int k = 0; k < nm; k++)
@@ -102,17 +112,23 @@ namespace Fulcrum.Dynamics
                 _wideBodies[2 * lane] = IndexOf(m.BodyA);
                 _wideBodies[2 * lane + 1] = IndexOf(m.BodyB);
             }
+            // Every group prepares on its own, split between threads (GroupJob); the rejects
+            // are then gathered colour by colour in group order, as one serial loop lists them.
+            _groupJob.WarmContacts = warmContacts;
+            _groupJob.Restitution = false;
+            RunGroups(GroupPass.PrepareWide, groups, MinGroupChunk);
+            HasRestitution |= _groupJob.Restitution;
             int rejected = 0;
             for (int c = 0; c < Buckets; c++)
             {
                 _rejectedStart[c] = rejected;
-                HasRestitution |= ContactSolverWide.Prepare(_wide, _wideImpact, _wideStart[c], _wideStart[c + 1], _wideManifold, _wideBodies,
-                    _wideSlots, _manifolds, Bodies, warmContacts, _rejected, ref rejected);
-                for (int r = _rejectedStart[c]; r < rejected; r++)
-                {
-                    _contactCursor[c]++;
-                    _pointCursor[c] += ContactManifold.MaxPoints;
-                }
+                for (int g = _wideStart[c]; g < _wideStart[c + 1]; g++)
+                    for (int r = 0; r < _groupRejectCount[g]; r++)
+                    {
+                        _rejected[rejected++] = _groupRejects[g * width + r];
+                        _contactCursor[c]++;
+                        _pointCursor[c] += ContactManifold.MaxPoints;
+                    }
             }
             _rejectedStart[Buckets] = rejected;
         }
@@ -191,16 +207,12 @@ namespace Fulcrum.Dynamics
             return lanes.Slice(0, used);
         }
 
-        void AccumulateWide()
-        {
-            for (int g = 0; g < _wideGroups; g++) ContactSolverWide.Accumulate(_wide[g], ref _wideImpact[g]);
-        }
+        void AccumulateWide() => RunGroups(GroupPass.Accumulate, _wideGroups, 4 * MinGroupChunk);
 
         void StoreWide(float scale)
         {
-            int width = ContactSolverWide.Width;
-            for (int g = 0; g < _wideGroups; g++)
-                ContactSolverWide.Store(_wide[g], _wideImpact[g], _wideSlots, _wideManifold, g * width, _manifolds, scale);
+            _groupJob.Scale = scale;
+            RunGroups(GroupPass.StoreImpulses, _wideGroups, MinGroupChunk);
         }
 
         // One pass over the wide groups [start, end) of a colour's range (those below wideCount).

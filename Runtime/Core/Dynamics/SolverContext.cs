@@ -54,6 +54,7 @@ namespace Fulcrum.Dynamics
         JointSolver.StepParameters _jointParameters;
         readonly ColorJob _colorJob;
         readonly BodyJob _bodyJob;
+        readonly GroupJob _groupJob;
         readonly ShockPropagation _shock = new ShockPropagation();
 
         // Contacts of each colour not taken by the wide path, by index into Contacts.
@@ -88,6 +89,7 @@ namespace Fulcrum.Dynamics
         {
             _colorJob = new ColorJob(this);
             _bodyJob = new BodyJob(this);
+            _groupJob = new GroupJob(this);
         }
 
         /// <summary>The (sub)step of the current solve, s.</summary>

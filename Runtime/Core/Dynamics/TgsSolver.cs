@@ -40,8 +40,7 @@ namespace Fulcrum.Dynamics
                     for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
                 context.AccumulateApplied();
             }
-            context.StoreVelocities();
-            context.StorePositions();
+            context.StoreBodies();
             return context.End();
         }
     }

@@ -13,7 +13,8 @@ namespace Fulcrum
         /// allocates nothing inside <see cref="Step"/>; the buffers otherwise double as counts
         /// first rise (as Jolt's <c>PhysicsSystem.Init</c> limits and Bepu's initial allocation
         /// sizes work). Manifolds are planned for the smaller of the pairs and 4 per body.
-        /// Counts already reached are kept; nothing shrinks.
+        /// Counts already reached are kept; nothing shrinks. With <see cref="WorldSettings.Threads"/>
+        /// &gt; 1 it also starts the worker threads and sizes the parallel narrow phase's buffers.
         /// </summary>
         /// <exception cref="ArgumentException">A count is negative or above <see cref="Limits.MaxReserve"/>.</exception>
         public void Reserve(int bodies, int contactPairs)
@@ -35,6 +36,12 @@ namespace Fulcrum
             _islands.Reserve(slots, manifolds, Joints.ActiveCount);
             _solverContext.Reserve(slots, manifolds, Joints.ActiveCount);
             if (_freeBodies.Length < slots) _freeBodies = new int[slots];
+            // With threads, the worker pool and the parallel narrow phase's candidate slots are
+            // made now too (the slots grow with the contact count otherwise: about 10 KB per
+            // step while a 2k-box pile collapsed on 2 threads). A world that turns threads on
+            // later gets them sized from the reserved pairs on first use.
+            if (_settings.Threads > 1) ParallelScheduler();
+            _narrowPhase.ReserveParallel(pairs, _settings.Threads);
             if (_solvedInStep.Length < slots) Array.Resize(ref _solvedInStep, slots);
         }
 

@@ -3,6 +3,7 @@ using System.Numerics;
 using BepuPhysics;
 using BepuPhysics.Collidables;
 using BepuPhysics.Constraints;
+using BepuUtilities;
 using BepuUtilities.Memory;
 using BepuBodyHandle = BepuPhysics.BodyHandle;
 
@@ -10,21 +11,30 @@ namespace Fulcrum.Benchmarks.Peers
 {
     /// <summary>
     /// BepuPhysics 2 (built by the user and referenced with -p:BepuDir=...): its substepping solver
-    /// with SolveDescription(iterations, substeps), sleeping off, single-threaded Timestep.
+    /// with SolveDescription(iterations, substeps), sleeping off; Timestep on the calling thread, or
+    /// with Bepu's own ThreadDispatcher for more threads.
     /// </summary>
     public sealed class BepuPeer : IPeerEngine
     {
+        readonly int _threads;
+        ThreadDispatcher? _dispatcher;
         BufferPool? _pool;
         Simulation? _simulation;
         BepuBodyHandle[] _bodies = System.Array.Empty<BepuBodyHandle>();
 
-        public string Name => "Bepu2";
+        /// <summary>A Bepu row on <paramref name="threads"/> threads.</summary>
+        public BepuPeer(int threads = 1) => _threads = threads;
+
+        public string Name => "Bepu2" + (_threads > 1 ? $" {_threads} threads" : "");
+
+        public int Threads => _threads;
 
         public string Version => PeerRoster.VersionOf(typeof(Simulation));
 
         public void Build(PeerScene scene, PeerSettings settings)
         {
             _pool = new BufferPool();
+            if (_threads > 1) _dispatcher = new ThreadDispatcher(_threads);
             var contacts = new BepuContactCallbacks(settings.Friction, settings.MaxPushSpeed,
                 new SpringSettings(settings.ContactHertz, settings.ContactDampingRatio));
             var gravity = new BepuGravityCallbacks(new Vector3(0, settings.GravityY, 0));
@@ -53,7 +63,7 @@ namespace Fulcrum.Benchmarks.Peers
             }
         }
 
-        public void Step(float dt) => _simulation!.Timestep(dt);
+        public void Step(float dt) => _simulation!.Timestep(dt, _dispatcher);
 
         public void ReadPose(int box, out Vector3 position, out Quaternion rotation)
         {
@@ -66,8 +76,10 @@ namespace Fulcrum.Benchmarks.Peers
         {
             _simulation?.Dispose();
             _pool?.Clear();
+            _dispatcher?.Dispose();
             _simulation = null;
             _pool = null;
+            _dispatcher = null;
         }
     }
 }

@@ -2,13 +2,28 @@ using System.Numerics;
 
 namespace Fulcrum.Benchmarks.Peers
 {
-    /// <summary>Fulcrum itself, TGS with the matched substeps and iterations.</summary>
+    /// <summary>
+    /// Fulcrum itself, TGS with the matched substeps and iterations; optionally on more threads
+    /// (its worker pool) or with manifold reuse off (every touching pair runs its pair function
+    /// every step, as in the other engines).
+    /// </summary>
     public sealed class FulcrumPeer : IPeerEngine
     {
+        readonly int _threads;
+        readonly bool _reuse;
         World? _world;
         BodyHandle[] _bodies = System.Array.Empty<BodyHandle>();
 
-        public string Name => "Fulcrum";
+        /// <summary>A Fulcrum row on <paramref name="threads"/> threads, with or without manifold reuse.</summary>
+        public FulcrumPeer(int threads = 1, bool reuse = true)
+        {
+            _threads = threads;
+            _reuse = reuse;
+        }
+
+        public string Name => "Fulcrum" + (_reuse ? "" : " reuse off") + (_threads > 1 ? $" {_threads} threads" : "");
+
+        public int Threads => _threads;
 
         public string Version => PeerRoster.VersionOf(typeof(World));
 
@@ -24,7 +39,8 @@ namespace Fulcrum.Benchmarks.Peers
             ws.ContactDampingRatio = settings.ContactDampingRatio;
             ws.MaxContactPushSpeed = settings.MaxPushSpeed;
             ws.EnableSleeping = false;
-            ws.Threads = 1;
+            ws.Threads = _threads;
+            if (!_reuse) ws.ManifoldReuseDistance = 0;
             var world = new World(ws);
 
             BodyHandle ground = world.CreateBody(BodyDef.Static(scene.Ground.Center));
@@ -56,6 +72,9 @@ namespace Fulcrum.Benchmarks.Peers
 
         public void Step(float dt) => _world!.Step(dt);
 
+        /// <summary>The per-stage times of the last step (World.LastStepProfile).</summary>
+        public StepProfile LastStepProfile => _world!.LastStepProfile;
+
         public void ReadPose(int box, out Vector3 position, out Quaternion rotation)
         {
             BodyRef body = _world!.GetBody(_bodies[box]);
@@ -63,6 +82,10 @@ namespace Fulcrum.Benchmarks.Peers
             rotation = body.Rotation;
         }
 
-        public void Dispose() => _world = null;
+        public void Dispose()
+        {
+            _world?.StopThreads();
+            _world = null;
+        }
     }
 }

@@ -6,8 +6,11 @@ namespace Fulcrum.Benchmarks.Peers
     /// <summary>One physics engine driven through the same small surface: build a scene, step, read poses.</summary>
     public interface IPeerEngine : IDisposable
     {
-        /// <summary>Name printed in the table (with the version where known).</summary>
+        /// <summary>Row label printed in the table: the engine and any setting that differs from the matched one.</summary>
         string Name { get; }
+
+        /// <summary>Threads a step may use (1: the calling thread only).</summary>
+        int Threads { get; }
 
         /// <summary>The engine assembly's informational version (with the source commit where the build recorded one).</summary>
         string Version { get; }

@@ -18,6 +18,8 @@ namespace Fulcrum.Benchmarks.Peers
 
         public string Name => "Jitter2";
 
+        public int Threads => 1;
+
         public string Version => PeerRoster.VersionOf(typeof(JitterWorld));
 
         public void Build(PeerScene scene, PeerSettings settings)

@@ -9,12 +9,22 @@ namespace Fulcrum.Benchmarks.Peers
     /// </summary>
     public static class PeerRoster
     {
-        /// <summary>Factories for every engine compiled in, Fulcrum first.</summary>
-        public static IReadOnlyList<Func<IPeerEngine>> Engines()
+        /// <summary>
+        /// Factories for every row: Fulcrum first (the reference of the ratio column), Fulcrum with
+        /// manifold reuse off and on <paramref name="threads"/> threads, then each peer compiled in
+        /// (Bepu on <paramref name="threads"/> threads too; Jitter2 on one).
+        /// </summary>
+        public static IReadOnlyList<Func<IPeerEngine>> Engines(int threads)
         {
-            var engines = new List<Func<IPeerEngine>> { () => new FulcrumPeer() };
+            var engines = new List<Func<IPeerEngine>>
+            {
+                () => new FulcrumPeer(),
+                () => new FulcrumPeer(reuse: false),
+                () => new FulcrumPeer(threads),
+            };
 #if PEER_BEPU
             engines.Add(() => new BepuPeer());
+            engines.Add(() => new BepuPeer(threads));
 #endif
 #if PEER_JITTER
             engines.Add(() => new JitterPeer());

@@ -50,65 +50,142 @@ namespace Fulcrum.Benchmarks.Peers
             return Stopwatch.GetElapsedTime(start).TotalSeconds;
         }
 
-        public static PeerResult Measure(IPeerEngine engine, PeerScene scene, PeerSettings settings)
+        /// <summary>
+        /// Builds <paramref name="scene"/> in <paramref name="engine"/>, runs its warm-up and phases
+        /// and returns one result per phase. Every step is timed alone; the poses are read after
+        /// every step (outside the timing) for the penetration, speed and finiteness figures.
+        /// </summary>
+        public static PeerResult[] Measure(IPeerEngine engine, PeerScene scene, PeerSettings settings)
         {
             engine.Build(scene, settings);
             int total = scene.WarmupSteps + scene.MeasuredSteps;
-            var cpuMs = new double[scene.MeasuredSteps];
-            var wallMs = new double[scene.MeasuredSteps];
-            double maxPenetration = 0;
+            int phases = scene.Phases.Count;
+            bool cpuTime = engine.Threads == 1 && ThreadClock.IsCpuTime;
+            var ms = new double[phases][];
+            var wallMs = new double[phases][];
+            var allocated = new long[phases];
+            var processAllocated = new long[phases];
+            var maxPenetration = new double[phases];
+            var drift = new double[phases];
+            var sink = new double[phases];
+            var endSpeed = new double[phases];
+            var processCpu = new double[phases];
+            var stages = new double[phases][];
+            var fulcrum = engine as FulcrumPeer;
+            for (int f = 0; f < phases; f++)
+            {
+                ms[f] = new double[scene.Phases[f].Steps];
+                wallMs[f] = new double[scene.Phases[f].Steps];
+                drift[f] = sink[f] = double.NaN;
+                stages[f] = new double[StepProfile.StageCount];
+            }
+            var previous = new Vector3[scene.Boxes.Count];
+            for (int i = 0; i < previous.Length; i++) previous[i] = scene.Boxes[i].Center;
             bool finite = true;
-            long allocated = 0;
+            float groundTop = scene.Ground.Center.Y + scene.Ground.HalfExtents.Y;
             for (int step = 0; step < total; step++)
             {
+                int timed = step - scene.WarmupSteps;
+                int phase = -1;
+                for (int f = 0; f < phases; f++)
+                    if (scene.Phases[f].Contains(timed)) phase = f;
+                // The process-wide count is exact only with precise: true, which briefly
+                // suspends every thread: read it at the phase's ends, not around every step
+                // (nothing between the steps allocates).
+                if (phase >= 0 && timed == scene.Phases[phase].Start) processAllocated[phase] = -GC.GetTotalAllocatedBytes(true);
                 long bytes = GC.GetAllocatedBytesForCurrentThread();
+                double processStart = ThreadClock.ProcessNowMs();
                 double cpuStart = ThreadClock.NowMs();
                 long start = Stopwatch.GetTimestamp();
                 engine.Step(settings.Dt);
                 long end = Stopwatch.GetTimestamp();
                 double cpuEnd = ThreadClock.NowMs();
-                if (step >= scene.WarmupSteps)
+                double processEnd = ThreadClock.ProcessNowMs();
+                if (phase < 0)
                 {
-                    allocated += GC.GetAllocatedBytesForCurrentThread() - bytes;
-                    cpuMs[step - scene.WarmupSteps] = cpuEnd - cpuStart;
-                    wallMs[step - scene.WarmupSteps] = (end - start) * 1000.0 / Stopwatch.Frequency;
+                    ReadPoses(engine, scene, previous, groundTop, ref finite, out _, out _);
+                    continue;
                 }
-                float groundTop = scene.Ground.Center.Y + scene.Ground.HalfExtents.Y;
-                for (int i = 0; i < scene.Boxes.Count; i++)
+                allocated[phase] += GC.GetAllocatedBytesForCurrentThread() - bytes;
+                int k = timed - scene.Phases[phase].Start;
+                double wall = (end - start) * 1000.0 / Stopwatch.Frequency;
+                ms[phase][k] = cpuTime ? cpuEnd - cpuStart : wall;
+                wallMs[phase][k] = wall;
+                processCpu[phase] += processEnd - processStart;
+                if (fulcrum != null)
                 {
-                    engine.ReadPose(i, out Vector3 p, out Quaternion q);
-                    if (!(float.IsFinite(p.X) && float.IsFinite(p.Y) && float.IsFinite(p.Z))) { finite = false; continue; }
-                    maxPenetration = Math.Max(maxPenetration, groundTop - PeerBox.LowestY(p, q, scene.Boxes[i].HalfExtents));
+                    StepProfile profile = fulcrum.LastStepProfile;
+                    for (int stage = 0; stage < StepProfile.StageCount; stage++) stages[phase][stage] += profile[(StepStage)stage];
                 }
-            }
-
-            double drift = double.NaN, sink = double.NaN;
-            if (scene.Tracked >= 0)
-            {
-                engine.ReadPose(scene.Tracked, out Vector3 end, out _);
-                Vector3 start = scene.Boxes[scene.Tracked].Center;
-                drift = Math.Sqrt((end.X - start.X) * (end.X - start.X) + (end.Z - start.Z) * (end.Z - start.Z));
-                sink = start.Y - end.Y;
+                ReadPoses(engine, scene, previous, groundTop, ref finite, out double penetration, out double moved);
+                maxPenetration[phase] = Math.Max(maxPenetration[phase], penetration);
+                if (k == scene.Phases[phase].Steps - 1)
+                {
+                    processAllocated[phase] += GC.GetTotalAllocatedBytes(true);
+                    endSpeed[phase] = moved / (scene.Boxes.Count * settings.Dt);
+                    if (scene.Tracked >= 0)
+                    {
+                        engine.ReadPose(scene.Tracked, out Vector3 at, out _);
+                        Vector3 from = scene.Boxes[scene.Tracked].Center;
+                        drift[phase] = Math.Sqrt((at.X - from.X) * (at.X - from.X) + (at.Z - from.Z) * (at.Z - from.Z));
+                        sink[phase] = from.Y - at.Y;
+                    }
+                }
             }
             string name = engine.Name;
+            int threads = engine.Threads;
             engine.Dispose();
 
-            Array.Sort(cpuMs);
-            Array.Sort(wallMs);
-            return new PeerResult
+            var results = new PeerResult[phases];
+            for (int f = 0; f < phases; f++)
             {
-                Engine = name,
-                Scene = scene.Name,
-                Bodies = scene.Boxes.Count,
-                MedianMs = Percentile(cpuMs, 0.5),
-                P95Ms = Percentile(cpuMs, 0.95),
-                WallMedianMs = Percentile(wallMs, 0.5),
-                BytesPerStep = scene.MeasuredSteps > 0 ? (double)allocated / scene.MeasuredSteps : 0,
-                Drift = drift,
-                Sink = sink,
-                MaxGroundPenetration = maxPenetration,
-                Finite = finite,
-            };
+                int steps = scene.Phases[f].Steps;
+                double sum = 0, wallSum = 0;
+                foreach (double t in ms[f]) sum += t;
+                foreach (double t in wallMs[f]) wallSum += t;
+                Array.Sort(ms[f]);
+                Array.Sort(wallMs[f]);
+                results[f] = new PeerResult
+                {
+                    Engine = name,
+                    Scene = scene.Phases[f].Name,
+                    Bodies = scene.Boxes.Count,
+                    Threads = threads,
+                    CpuTime = cpuTime,
+                    MeanMs = steps > 0 ? sum / steps : double.NaN,
+                    MedianMs = Percentile(ms[f], 0.5),
+                    P95Ms = Percentile(ms[f], 0.95),
+                    WallMeanMs = steps > 0 ? wallSum / steps : double.NaN,
+                    ProcessCpuMs = steps > 0 ? processCpu[f] / steps : double.NaN,
+                    StageMs = fulcrum == null || steps == 0 ? null : Array.ConvertAll(stages[f], t => t / steps),
+                    WallMedianMs = Percentile(wallMs[f], 0.5),
+                    BytesPerStep = steps > 0 ? (double)allocated[f] / steps : 0,
+                    ProcessBytesPerStep = steps > 0 ? (double)processAllocated[f] / steps : 0,
+                    Drift = drift[f],
+                    Sink = sink[f],
+                    MaxGroundPenetration = maxPenetration[f],
+                    EndSpeed = endSpeed[f],
+                    Finite = finite,
+                };
+            }
+            return results;
+        }
+
+        // Reads every pose after a step: the deepest corner below the ground, the summed distance
+        // the boxes moved since the last read (previous is updated), and whether all are finite.
+        static void ReadPoses(IPeerEngine engine, PeerScene scene, Vector3[] previous, float groundTop, ref bool finite,
+            out double penetration, out double moved)
+        {
+            penetration = 0;
+            moved = 0;
+            for (int i = 0; i < scene.Boxes.Count; i++)
+            {
+                engine.ReadPose(i, out Vector3 p, out Quaternion q);
+                if (!(float.IsFinite(p.X) && float.IsFinite(p.Y) && float.IsFinite(p.Z))) { finite = false; continue; }
+                penetration = Math.Max(penetration, groundTop - PeerBox.LowestY(p, q, scene.Boxes[i].HalfExtents));
+                moved += Vector3.Distance(p, previous[i]);
+                previous[i] = p;
+            }
         }
 
         // Nearest-rank percentile of sorted values.

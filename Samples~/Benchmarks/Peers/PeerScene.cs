@@ -20,17 +20,31 @@ namespace Fulcrum.Benchmarks.Peers
         public int Tracked { get; }
         /// <summary>Steps run before timing starts (JIT, caches, first contacts).</summary>
         public int WarmupSteps { get; }
-        /// <summary>Steps timed after warm-up; the accuracy figures are read after the last one.</summary>
+        /// <summary>Steps run after warm-up: up to the end of the last phase (steps between phases run untimed).</summary>
         public int MeasuredSteps { get; }
+        /// <summary>
+        /// The timed steps split into consecutive phases, each reported as its own row (a pile's
+        /// collapse and its settled heap cost differently; one figure over both hides either).
+        /// The accuracy figures of a phase are read after its last step.
+        /// </summary>
+        public IReadOnlyList<PeerPhase> Phases { get; }
 
-        PeerScene(string name, List<PeerBox> boxes, int tracked, int warmupSteps, int measuredSteps)
+        PeerScene(string name, List<PeerBox> boxes, int tracked, int warmupSteps, params PeerPhase[] phases)
         {
             Name = name;
             Ground = new PeerBox(new Vector3(0, -0.5f, 0), Quaternion.Identity, new Vector3(100, 0.5f, 100));
             Boxes = boxes;
             Tracked = tracked;
             WarmupSteps = warmupSteps;
-            MeasuredSteps = measuredSteps;
+            Phases = phases;
+            int steps = 0;
+            foreach (PeerPhase phase in phases) steps = Math.Max(steps, phase.Start + phase.Steps);
+            MeasuredSteps = steps;
+        }
+
+        PeerScene(string name, List<PeerBox> boxes, int tracked, int warmupSteps, int measuredSteps)
+            : this(name, boxes, tracked, warmupSteps, new PeerPhase(name, 0, measuredSteps))
+        {
         }
 
         static readonly Vector3 Half = new Vector3(0.5f);
@@ -66,8 +80,25 @@ namespace Fulcrum.Benchmarks.Peers
         /// <summary>
         /// Boxes in a loose grid (side x side columns, 1.5 m apart, layers 1.5 m apart from 1 m up),
         /// each tilted by a small seeded random rotation so the columns collapse into a pile.
+        /// One phase of <paramref name="measuredSteps"/> timed steps.
         /// </summary>
-        public static PeerScene Pile(int side, int layers, int warmupSteps, int measuredSteps)
+        public static PeerScene Pile(int side, int layers, int warmupSteps, int measuredSteps) =>
+            new PeerScene($"pile {side * side * layers}", PileBoxes(side, layers), -1, warmupSteps, measuredSteps);
+
+        /// <summary>
+        /// The same pile timed in two phases: <paramref name="collapseSteps"/> steps while it
+        /// falls and collapses, then, after <paramref name="untimedSteps"/> untimed steps (still
+        /// stepped, not measured), <paramref name="settledSteps"/> steps of the heap at rest.
+        /// </summary>
+        public static PeerScene PilePhases(int side, int layers, int warmupSteps, int collapseSteps, int untimedSteps, int settledSteps)
+        {
+            string name = $"pile {side * side * layers}";
+            return new PeerScene(name, PileBoxes(side, layers), -1, warmupSteps,
+                new PeerPhase(name + " collapse", 0, collapseSteps),
+                new PeerPhase(name + " settled", collapseSteps + untimedSteps, settledSteps));
+        }
+
+        static List<PeerBox> PileBoxes(int side, int layers)
         {
             const float pitch = 1.5f;
             var random = new Random(12345);
@@ -82,7 +113,7 @@ namespace Fulcrum.Benchmarks.Peers
                         var tilt = Quaternion.CreateFromAxisAngle(axis, 0.3f * (float)random.NextDouble());
                         boxes.Add(new PeerBox(new Vector3(start + i * pitch, 1f + layer * pitch, start + k * pitch), tilt, Half));
                     }
-            return new PeerScene($"pile {boxes.Count}", boxes, -1, warmupSteps, measuredSteps);
+            return boxes;
         }
     }
 }

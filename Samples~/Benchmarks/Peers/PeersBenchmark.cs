@@ -7,36 +7,58 @@ namespace Fulcrum.Benchmarks.Peers
 {
     /// <summary>
     /// Fulcrum beside BepuPhysics 2 and Jitter2 (whichever were compiled in) in one process, on the
-    /// same box scenes with matched step, substeps and iterations: ms per step and the same
-    /// accuracy figures for each, so speed is compared at equal accuracy.
-    /// Options: --substeps=S --iterations=I (default: Fulcrum's defaults).
+    /// same box scenes with matched step, substeps and iterations: mean, median and p95 ms per
+    /// step and the same accuracy figures for each, so speed is compared at equal accuracy.
+    /// Rows: Fulcrum (the ratio column's reference), Fulcrum with manifold reuse off, Fulcrum and
+    /// Bepu on --threads threads, Bepu and Jitter2 on one. The pile is timed in two phases
+    /// (collapse, settled heap). Each run measures every row of a scene before the next scene,
+    /// in an order that alternates between runs and scenes, so a slow spell of a loaded machine
+    /// does not land on one engine; with --runs=N the summary gives each figure's range over runs.
+    /// Options (--name=value or --name value): --runs=N (default 1), --threads=T (default 2), --substeps=S --iterations=I
+    /// --relax=R (default: Fulcrum's defaults; relax passes apply to Fulcrum and Jitter2),
+    /// --scene=NAME (only the scenes whose name starts with NAME: tower, pyramid, pile).
     /// </summary>
     public sealed class PeersBenchmark : IBenchmark
     {
         public string Name => "peers";
 
-        public string Description => "Fulcrum vs BepuPhysics 2 / Jitter2 (opt-in builds): tower, pyramid, pile; ms/step and drift";
+        public string Description => "Fulcrum vs BepuPhysics 2 / Jitter2 (opt-in builds): tower, pyramid, pile collapse/settled; mean/median/p95 ms, bytes, drift; --runs=N";
 
         public void Run(TextWriter output, bool quick)
         {
             int? substeps = Option("--substeps=", WorldSettings.Default.Substeps, output);
             int? iterations = Option("--iterations=", WorldSettings.Default.Iterations, output);
-            if (substeps == null || iterations == null) return;
-            var settings = new PeerSettings { Substeps = substeps.Value, Iterations = iterations.Value };
+            int? runs = Option("--runs=", 1, output);
+            int? threads = Option("--threads=", 2, output);
+            int? relax = Option("--relax=", WorldSettings.Default.RelaxIterations, output, min: 0);
+            if (substeps == null || iterations == null || runs == null || threads == null || relax == null) return;
+            var settings = new PeerSettings { Substeps = substeps.Value, Iterations = iterations.Value, RelaxIterations = relax.Value };
             PeerScene[] scenes = quick
-                ? new[] { PeerScene.Tower(20, 30, 120), PeerScene.Pyramid(6, 10, 60), PeerScene.Pile(5, 4, 10, 60) }
-                : new[] { PeerScene.Tower(20, 60, 600), PeerScene.Pyramid(20, 30, 270), PeerScene.Pile(12, 14, 30, 270) };
+                ? new[] { PeerScene.Tower(20, 30, 120), PeerScene.Pyramid(6, 10, 60), PeerScene.PilePhases(5, 4, 10, 60, 60, 60) }
+                : new[] { PeerScene.Tower(20, 60, 600), PeerScene.Pyramid(20, 30, 270), PeerScene.PilePhases(12, 14, 30, 270, 300, 270) };
 
+            string? only = TextOption("--scene=");
+            if (only != null)
+            {
+                scenes = Array.FindAll(scenes, scene => scene.Name.StartsWith(only, StringComparison.Ordinal));
+                if (scenes.Length == 0)
+                {
+                    output.WriteLine($"--scene={only} names no scene (tower, pyramid, pile); nothing was run.");
+                    return;
+                }
+            }
             string? hint = PeerRoster.MissingHint();
             if (hint != null) output.WriteLine(hint);
             output.WriteLine(string.Create(CultureInfo.InvariantCulture,
-                $"matched: dt 1/60 s, {settings.Substeps} substeps x {settings.Iterations} iterations, relax {settings.RelaxIterations} (Fulcrum, Jitter2), Fulcrum block solver {(WorldSettings.Default.BlockSolver ? "on" : "off")}, friction {settings.Friction}, 1 kg unit cubes, contact {settings.ContactHertz} Hz / damping ratio {settings.ContactDampingRatio} / push-out {settings.MaxPushSpeed} m/s (Fulcrum, Bepu), no sleeping, no damping, 1 thread"));
+                $"matched: dt 1/60 s, {settings.Substeps} substeps x {settings.Iterations} iterations, relax {settings.RelaxIterations} (Fulcrum, Jitter2), Fulcrum block solver {(WorldSettings.Default.BlockSolver ? "on" : "off")}, friction {settings.Friction}, 1 kg unit cubes, contact {settings.ContactHertz} Hz / damping ratio {settings.ContactDampingRatio} / push-out {settings.MaxPushSpeed} m/s (Fulcrum, Bepu), no sleeping, no damping"));
             output.WriteLine(ThreadClock.IsCpuTime
-                ? "ms/step, p95: the stepping thread's CPU time (median, 95th percentile of timed steps); wall ms: median wall time; x Fulcrum: ms/step over Fulcrum's"
-                : "ms/step, p95: wall time (median, 95th percentile of timed steps); x Fulcrum: ms/step over Fulcrum's");
-            output.WriteLine("drift: top box's x/z distance from its start at the end; sink: its start y - end y; ground pen: deepest corner below the ground over the run");
+                ? "clock: 1-thread rows (cpu) time the stepping thread's CPU time, so time slices lost to other processes are not counted; rows on several threads (wall) time wall time"
+                : "clock: wall time for every row");
+            output.WriteLine("mean/median/p95: of the timed steps; x Fulcrum: mean over the Fulcrum row's mean on the same clock (1-thread rows: CPU; threaded rows: wall), same run;");
+            output.WriteLine("speed-up: the same engine's 1-thread wall mean over this row's wall mean; proc cpu ms: CPU time of all the process's threads per step (mean); B/step: bytes the stepping thread allocated per step; all B/step: the whole process (runtime background threads too)");
+            output.WriteLine("drift: top box's x/z distance from its start at the phase's end; sink: its start y - end y; ground pen: deepest corner below the ground in the phase; speed: mean box speed in the phase's last step");
 
-            IReadOnlyList<Func<IPeerEngine>> engines = PeerRoster.Engines();
+            IReadOnlyList<Func<IPeerEngine>> engines = PeerRoster.Engines(threads.Value);
             var versions = new List<string>();
             foreach (Func<IPeerEngine> create in engines)
             {
@@ -45,59 +67,64 @@ namespace Fulcrum.Benchmarks.Peers
                 versions.Add(string.Create(CultureInfo.InvariantCulture, $"{engine.Name} {engine.Version} (warm-up {warm:F1} s)"));
             }
             output.WriteLine("engines: " + string.Join(", ", versions));
-            var rows = new List<PeerResult>();
-            foreach (PeerScene scene in scenes)
-                foreach (Func<IPeerEngine> create in engines)
-                    rows.Add(PeerRun.Measure(create(), scene, settings));
-            Print(output, rows);
-        }
-
-        static void Print(TextWriter output, List<PeerResult> rows)
-        {
-            var table = new List<string[]>
+            var all = new List<List<PeerResult>>();
+            for (int run = 0; run < runs.Value; run++)
             {
-                new[] { "engine", "scene", "bodies", "ms/step", "p95 ms", "wall ms", "x Fulcrum", "alloc B/step", "drift mm", "sink mm", "ground pen mm", "finite" },
-            };
-            double fulcrumMs = double.NaN;
-            foreach (PeerResult r in rows)
-            {
-                if (r.Engine == "Fulcrum") fulcrumMs = r.MedianMs;
-                table.Add(new[]
+                var rows = new List<PeerResult>();
+                for (int sc = 0; sc < scenes.Length; sc++)
                 {
-                    r.Engine, r.Scene, r.Bodies.ToString(CultureInfo.InvariantCulture),
-                    Format(r.MedianMs, "F3"), Format(r.P95Ms, "F3"), Format(r.WallMedianMs, "F3"), Format(r.MedianMs / fulcrumMs, "F2"), Format(r.BytesPerStep, "F0"),
-                    Format(r.Drift * 1000, "F1"), Format(r.Sink * 1000, "F1"), Format(r.MaxGroundPenetration * 1000, "F1"),
-                    r.Finite ? "yes" : "NO",
-                });
-            }
-            var widths = new int[table[0].Length];
-            foreach (string[] row in table)
-                for (int c = 0; c < row.Length; c++) widths[c] = Math.Max(widths[c], row[c].Length);
-            foreach (string[] row in table)
-            {
-                var line = new System.Text.StringBuilder();
-                for (int c = 0; c < row.Length; c++)
-                    line.Append(c < 2 ? row[c].PadRight(widths[c] + 2) : row[c].PadLeft(widths[c]) + "  ");
-                output.WriteLine(line.ToString().TrimEnd());
-            }
-        }
-
-        static string Format(double value, string format) =>
-            double.IsNaN(value) ? "-" : value.ToString(format, CultureInfo.InvariantCulture);
-
-        // Program passes every "--" argument through untouched, so options ride along as --name=value.
-        // A bad value prints one line and returns null: nothing runs.
-        static int? Option(string prefix, int fallback, TextWriter output)
-        {
-            foreach (string arg in Environment.GetCommandLineArgs())
-                if (arg.StartsWith(prefix, StringComparison.Ordinal))
-                {
-                    if (int.TryParse(arg.AsSpan(prefix.Length), NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) && value >= 1)
-                        return value;
-                    output.WriteLine($"{prefix}N needs an integer >= 1, got '{arg}'; nothing was run.");
-                    return null;
+                    var measured = new PeerResult[engines.Count][];
+                    bool reverse = ((run + sc) & 1) == 1;
+                    for (int n = 0; n < engines.Count; n++)
+                    {
+                        int e = reverse ? engines.Count - 1 - n : n;
+                        measured[e] = PeerRun.Measure(engines[e](), scenes[sc], settings);
+                    }
+                    // Rows in roster order, phase by phase.
+                    for (int f = 0; f < scenes[sc].Phases.Count; f++)
+                        for (int e = 0; e < engines.Count; e++) rows.Add(measured[e][f]);
                 }
-            return fallback;
+                all.Add(rows);
+                if (runs.Value > 1)
+                {
+                    output.WriteLine();
+                    output.WriteLine($"run {run + 1} of {runs.Value}:");
+                }
+                PeerTable.Print(output, new List<List<PeerResult>> { rows });
+            }
+            if (runs.Value > 1)
+            {
+                output.WriteLine();
+                output.WriteLine($"ranges over {runs.Value} runs (lowest-highest):");
+                PeerTable.Print(output, all);
+            }
+            output.WriteLine();
+            output.WriteLine("Fulcrum by stage (World.LastStepProfile, wall ms per step, mean" + (runs.Value > 1 ? ", range over runs" : "") + "):");
+            PeerTable.PrintStages(output, all);
+        }
+
+        // Program passes every "--" argument (and every number) through untouched, so options ride along.
+        // A bad value prints one line and returns null: nothing runs.
+        // "--name=value", or "--name value" (prefix is "--name=").
+        static string? TextOption(string prefix)
+        {
+            string[] args = Environment.GetCommandLineArgs();
+            for (int i = 0; i < args.Length; i++)
+            {
+                if (args[i].StartsWith(prefix, StringComparison.Ordinal)) return args[i].Substring(prefix.Length);
+                if (args[i] == prefix.TrimEnd('=') && i + 1 < args.Length) return args[i + 1];
+            }
+            return null;
+        }
+
+        static int? Option(string prefix, int fallback, TextWriter output, int min = 1)
+        {
+            string? text = TextOption(prefix);
+            if (text == null) return fallback;
+            if (int.TryParse(text, NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) && value >= min)
+                return value;
+            output.WriteLine($"{prefix}N needs an integer >= {min}, got '{text}'; nothing was run.");
+            return null;
         }
     }
 }

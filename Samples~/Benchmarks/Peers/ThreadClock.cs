@@ -12,6 +12,7 @@ namespace Fulcrum.Benchmarks.Peers
     /// </summary>
     public static class ThreadClock
     {
+        const int ClockProcessCpuTimeId = 2;
         const int ClockThreadCpuTimeId = 3;
 
         [StructLayout(LayoutKind.Sequential)]
@@ -33,6 +34,17 @@ namespace Fulcrum.Benchmarks.Peers
             try { return ClockGetTime(ClockThreadCpuTimeId, out _) == 0; }
             catch (DllNotFoundException) { return false; }
             catch (EntryPointNotFoundException) { return false; }
+        }
+
+        /// <summary>
+        /// CPU time of the whole process (every thread: workers, and the runtime's own), ms, where
+        /// <see cref="IsCpuTime"/>; otherwise NaN. Only differences mean anything.
+        /// </summary>
+        public static double ProcessNowMs()
+        {
+            if (IsCpuTime && ClockGetTime(ClockProcessCpuTimeId, out TimeSpec t) == 0)
+                return t.Seconds * 1e3 + t.Nanoseconds * 1e-6;
+            return double.NaN;
         }
 
         /// <summary>The clock's reading, ms; only differences mean anything.</summary>
