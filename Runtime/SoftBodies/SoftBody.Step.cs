@@ -31,6 +31,7 @@ namespace Fulcrum.SoftBodies
             SelfContacts?.FindPairs(X, V, dt);
             float heaviest = MathF.Max(CollideWithShapes ? Contacts.HeaviestBody(World) : 0f, AttachmentSolver.HeaviestBody(World, Attachments));
             ScaleInertia(heaviest / (InertiaRatio * TotalMass));
+            if (Tets.Length > 0) TetData.Pack(W, FreeW, M);
         }
 
         /// <summary>
@@ -196,7 +197,11 @@ namespace Fulcrum.SoftBodies
                 Array.Copy(_baseM!, M, M.Length);
                 _inertiaScale = 1f;
             }
-            if (Plasticity.Enabled && Tets.Length > 0) PlasticFlow.Apply(this, dt);
+            if (Plasticity.Enabled && Tets.Length > 0)
+            {
+                PlasticFlow.Apply(this, dt);
+                TetData.LoadElements(Tets);
+            }
         }
 
         RangeJob TetJob(float h, bool damping)
