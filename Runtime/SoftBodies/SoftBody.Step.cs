@@ -168,14 +168,14 @@ namespace Fulcrum.SoftBodies
         /// <summary>Every element family, colour by colour: the position solve, or the damping pass.</summary>
         void RunElements(float h, bool damping, ParallelRanges? pool)
         {
-            if (Tets.Length > 0) RunColors(TetJob(h, damping), TetColors, pool);
+            if (Tets.Length > 0) RunColors(TetJob(h, damping), TetColors, pool, damping ? 1 : 0);
             if (Tris.Length > 0)
             {
                 _membraneJob ??= new MembraneRangeJob(this);
                 _membraneJob.H = h;
                 _membraneJob.DampingTime = DampingTime;
                 _membraneJob.Damping = damping;
-                RunColors(_membraneJob, TriColors, pool);
+                RunColors(_membraneJob, TriColors, pool, damping ? 3 : 2);
             }
             if (Bends.Length > 0)
             {
@@ -183,7 +183,7 @@ namespace Fulcrum.SoftBodies
                 _bendingJob.H = h;
                 _bendingJob.DampingTime = DampingTime;
                 _bendingJob.Damping = damping;
-                RunColors(_bendingJob, BendColors, pool);
+                RunColors(_bendingJob, BendColors, pool, damping ? 5 : 4);
             }
         }
 
@@ -224,13 +224,24 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        static void RunColors(RangeJob job, int[] colors, ParallelRanges? pool)
+        // Pool or calling thread, per element family and pass (tets, membranes, bends; position or damping).
+        readonly ThreadChoice[] _threadChoice = { new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice() };
+
+        void RunColors(RangeJob job, int[] colors, ParallelRanges? pool, int choice)
         {
+            if (pool == null)
+            {
+                for (int c = 0; c + 1 < colors.Length; c++) job.Execute(colors[c], colors[c + 1]);
+                return;
+            }
+            ThreadChoice chooser = _threadChoice[choice];
+            bool parallel = chooser.Begin();
             for (int c = 0; c + 1 < colors.Length; c++)
             {
-                if (pool != null) pool.Run(job, colors[c], colors[c + 1]);
+                if (parallel) pool.Run(job, colors[c], colors[c + 1]);
                 else job.Execute(colors[c], colors[c + 1]);
             }
+            chooser.End(colors[colors.Length - 1]);
         }
     }
 }

@@ -1,6 +1,7 @@
 #if NET
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
 
@@ -62,7 +63,7 @@ namespace Fulcrum.SoftBodies
 
         /// <summary>Eight floats of one field from <paramref name="array"/>[<paramref name="at"/>].</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static Vector256<float> Load(float[] array, int at) => Vector256.LoadUnsafe(ref array[at]);
+        public static Vector256<float> Load(float[] array, int at) => Vector256.LoadUnsafe(ref MemoryMarshal.GetArrayDataReference(array), (nuint)at);
 
         /// <summary>Three consecutive fields (x, y, z runs of <paramref name="n"/>) at element <paramref name="at"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -70,7 +71,7 @@ namespace Fulcrum.SoftBodies
             new Lanes8(Load(array, field * n + at), Load(array, (field + 1) * n + at), Load(array, (field + 2) * n + at));
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static void Store(float[] array, int at, Vector256<float> value) => value.StoreUnsafe(ref array[at]);
+        public static void Store(float[] array, int at, Vector256<float> value) => value.StoreUnsafe(ref MemoryMarshal.GetArrayDataReference(array), (nuint)at);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Store(float[] array, int field, int n, int at, in Lanes8 value)
@@ -80,43 +81,52 @@ namespace Fulcrum.SoftBodies
             Store(array, (field + 2) * n + at, value.Z);
         }
 
-        /// <summary>The vertices <paramref name="index"/>[at .. at + 7] of a Vector3 array, as lanes.</summary>
+        /// <summary>
+        /// The vertices <paramref name="index"/>[at .. at + 7] of a Vector3 array, as lanes. Unchecked: the
+        /// indices are vertex indices of the body's own (validated) elements, and <paramref name="at"/> + 7 is inside the run.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Lanes8 Gather(Vector3[] v, int[] index, int at)
         {
-            Vector256<float> m0 = Vector256.Create(v[index[at]].AsVector128Unsafe(), v[index[at + 4]].AsVector128Unsafe());
-            Vector256<float> m1 = Vector256.Create(v[index[at + 1]].AsVector128Unsafe(), v[index[at + 5]].AsVector128Unsafe());
-            Vector256<float> m2 = Vector256.Create(v[index[at + 2]].AsVector128Unsafe(), v[index[at + 6]].AsVector128Unsafe());
-            Vector256<float> m3 = Vector256.Create(v[index[at + 3]].AsVector128Unsafe(), v[index[at + 7]].AsVector128Unsafe());
+            ref Vector3 b = ref MemoryMarshal.GetArrayDataReference(v);
+            ref int i = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(index), at);
+            Vector256<float> m0 = Vector256.Create(Unsafe.Add(ref b, i).AsVector128Unsafe(), Unsafe.Add(ref b, Unsafe.Add(ref i, 4)).AsVector128Unsafe());
+            Vector256<float> m1 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 1)).AsVector128Unsafe(), Unsafe.Add(ref b, Unsafe.Add(ref i, 5)).AsVector128Unsafe());
+            Vector256<float> m2 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 2)).AsVector128Unsafe(), Unsafe.Add(ref b, Unsafe.Add(ref i, 6)).AsVector128Unsafe());
+            Vector256<float> m3 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 3)).AsVector128Unsafe(), Unsafe.Add(ref b, Unsafe.Add(ref i, 7)).AsVector128Unsafe());
             Transpose(m0, m1, m2, m3, out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out _);
             return new Lanes8(x, y, z);
         }
 
-        /// <summary>The x, y, z of <paramref name="index"/>[at .. at + 7] of a Vector4 array, as lanes (w dropped).</summary>
+        /// <summary>The x, y, z of <paramref name="index"/>[at .. at + 7] of a Vector4 array, as lanes (w dropped); unchecked as above.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Lanes8 Gather(Vector4[] v, int[] index, int at)
         {
-            Vector256<float> m0 = Vector256.Create(v[index[at]].AsVector128(), v[index[at + 4]].AsVector128());
-            Vector256<float> m1 = Vector256.Create(v[index[at + 1]].AsVector128(), v[index[at + 5]].AsVector128());
-            Vector256<float> m2 = Vector256.Create(v[index[at + 2]].AsVector128(), v[index[at + 6]].AsVector128());
-            Vector256<float> m3 = Vector256.Create(v[index[at + 3]].AsVector128(), v[index[at + 7]].AsVector128());
+            ref Vector4 b = ref MemoryMarshal.GetArrayDataReference(v);
+            ref int i = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(index), at);
+            Vector256<float> m0 = Vector256.Create(Unsafe.Add(ref b, i).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 4)).AsVector128());
+            Vector256<float> m1 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 1)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 5)).AsVector128());
+            Vector256<float> m2 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 2)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 6)).AsVector128());
+            Vector256<float> m3 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 3)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 7)).AsVector128());
             Transpose(m0, m1, m2, m3, out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out _);
             return new Lanes8(x, y, z);
         }
 
-        /// <summary>Writes lanes back to the vertices <paramref name="index"/>[at .. at + 7] whose bit is set in <paramref name="write"/>.</summary>
+        /// <summary>Writes lanes back to the vertices <paramref name="index"/>[at .. at + 7] whose bit is set in <paramref name="write"/>; unchecked as above.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Scatter(Vector3[] v, int[] index, int at, uint write, in Lanes8 value)
         {
             Transpose(value.X, value.Y, value.Z, value.Z, out Vector256<float> r04, out Vector256<float> r15, out Vector256<float> r26, out Vector256<float> r37);
-            if ((write & 1) != 0) v[index[at]] = r04.GetLower().AsVector3();
-            if ((write & 2) != 0) v[index[at + 1]] = r15.GetLower().AsVector3();
-            if ((write & 4) != 0) v[index[at + 2]] = r26.GetLower().AsVector3();
-            if ((write & 8) != 0) v[index[at + 3]] = r37.GetLower().AsVector3();
-            if ((write & 16) != 0) v[index[at + 4]] = r04.GetUpper().AsVector3();
-            if ((write & 32) != 0) v[index[at + 5]] = r15.GetUpper().AsVector3();
-            if ((write & 64) != 0) v[index[at + 6]] = r26.GetUpper().AsVector3();
-            if ((write & 128) != 0) v[index[at + 7]] = r37.GetUpper().AsVector3();
+            ref Vector3 b = ref MemoryMarshal.GetArrayDataReference(v);
+            ref int i = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(index), at);
+            if ((write & 1) != 0) Unsafe.Add(ref b, i) = r04.GetLower().AsVector3();
+            if ((write & 2) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 1)) = r15.GetLower().AsVector3();
+            if ((write & 4) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 2)) = r26.GetLower().AsVector3();
+            if ((write & 8) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 3)) = r37.GetLower().AsVector3();
+            if ((write & 16) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 4)) = r04.GetUpper().AsVector3();
+            if ((write & 32) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 5)) = r15.GetUpper().AsVector3();
+            if ((write & 64) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 6)) = r26.GetUpper().AsVector3();
+            if ((write & 128) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 7)) = r37.GetUpper().AsVector3();
         }
 
         // 4x4 transposes within both 128-bit halves at once.

@@ -74,7 +74,9 @@ namespace Fulcrum.SoftBodies
             Round round;
             lock (_lock)
             {
-                int size = (count + chunks - 1) / chunks;
+                // Whole blocks of eight: the tet kernels take eight elements at a time and leave a
+                // chunk's last few to the scalar kernel.
+                int size = ((count + chunks - 1) / chunks + 7) & ~7;
                 _round = new Round { Job = job, Id = _round.Id + 1, Start = start, End = end, ChunkSize = size, ChunkCount = (count + size - 1) / size };
                 round = _round;
                 Volatile.Write(ref _done, 0);
