@@ -6,7 +6,7 @@ namespace Fulcrum.SoftBodies
     /// The tet solver's data as structure of arrays, in the same (colour) order as
     /// <see cref="SoftBody.Tets"/>: each field is a run of <see cref="Count"/> values, so the
     /// elements e .. e + 7 of one colour are eight consecutive values of every field and a SIMD
-    /// kernel reads them with one load per field (<see cref="XpbdTetSolverWide"/>); the scalar
+    /// kernel reads them with one load per field (XpbdTetSolverWide, .NET only); the scalar
     /// kernels read the same arrays. <see cref="SoftBody.Tets"/> stays the record of the rest
     /// state (diagnostics, plastic flow, the Newton solver and saved states read it) and is
     /// copied in by <see cref="LoadElements"/> whenever it changes.
