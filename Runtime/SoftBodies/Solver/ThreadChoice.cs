@@ -15,7 +15,14 @@ namespace Fulcrum.SoftBodies
     internal sealed class ThreadChoice
     {
         /// <summary>One pass in this many takes the way not currently preferred.</summary>
-        public const int ExploreEvery = 32;
+        public const int ExploreEvery = 64;
+
+        /// <summary>
+        /// The pool is preferred only when its time per element is below this fraction of the
+        /// calling thread's: a pass on the pool costs the machine a second core, and within the
+        /// timing noise of a busy machine the calling thread alone is the safe side.
+        /// </summary>
+        public const double Margin = 0.9;
 
         // Smoothed ticks per element each way; negative until measured.
         double _serial = -1, _parallel = -1;
@@ -31,7 +38,7 @@ namespace Fulcrum.SoftBodies
             else if (_serial < 0) _current = false;
             else
             {
-                bool prefer = _parallel < _serial;
+                bool prefer = _parallel < Margin * _serial;
                 _current = _pass % ExploreEvery == 0 ? !prefer : prefer;
             }
             _start = Stopwatch.GetTimestamp();
