@@ -28,7 +28,7 @@ namespace Fulcrum.SoftBodies
         double _serial = -1, _parallel = -1;
         int _pass;
         long _start;
-        bool _current;
+        bool _current, _exploring;
 
         /// <summary>Whether this pass should use the pool; call <see cref="End"/> after it.</summary>
         public bool Begin()
@@ -39,7 +39,8 @@ namespace Fulcrum.SoftBodies
             else
             {
                 bool prefer = _parallel < Margin * _serial;
-                _current = _pass % ExploreEvery == 0 ? !prefer : prefer;
+                _exploring = _pass % ExploreEvery == 0;
+                _current = _exploring ? !prefer : prefer;
             }
             _start = Stopwatch.GetTimestamp();
             return _current;
@@ -49,10 +50,17 @@ namespace Fulcrum.SoftBodies
         public void End(int elements)
         {
             if (elements <= 0) return;
-            double perElement = (double)(Stopwatch.GetTimestamp() - _start) / elements;
-            // An exponential average over about four passes: quick to follow a load change, steady against one slow pass.
-            if (_current) _parallel = _parallel < 0 ? perElement : _parallel + 0.25 * (perElement - _parallel);
-            else _serial = _serial < 0 ? perElement : _serial + 0.25 * (perElement - _serial);
+            Record((double)(Stopwatch.GetTimestamp() - _start) / elements);
+        }
+
+        /// <summary>Records a time per element (any unit) for the way the last <see cref="Begin"/> chose.</summary>
+        internal void Record(double perElement)
+        {
+            // The way taken: an exponential average over about four passes, steady against one
+            // slow pass. An exploring pass replaces its way's figure, which is 64 passes old.
+            ref double figure = ref _current ? ref _parallel : ref _serial;
+            figure = figure < 0 || _exploring ? perElement : figure + 0.25 * (perElement - figure);
+            _exploring = false;
         }
     }
 }
