@@ -27,6 +27,7 @@ namespace Fulcrum.SoftBodies
             w.WriteArray(FreeW);
             w.WriteArray(Tets);
             w.WriteArray(TetLambda);
+            TetData.ExportGradients(TetGrad);
             w.WriteArray(TetGrad);
             w.WriteArray(PlasticStrain);
             w.WriteArray(Tris);
@@ -115,6 +116,8 @@ namespace Fulcrum.SoftBodies
                 tetElements.CopyTo(Tets, 0);
                 tetLambda.CopyTo(TetLambda, 0);
                 tetGrad.CopyTo(TetGrad, 0);
+                TetData.LoadElements(Tets);
+                TetData.ImportGradients(TetGrad);
                 plastic.CopyTo(PlasticStrain, 0);
                 triElements.CopyTo(Tris, 0);
                 triLambda.CopyTo(TriLambda, 0);

@@ -31,6 +31,7 @@ namespace Fulcrum.SoftBodies
             SelfContacts?.FindPairs(X, V, dt);
             float heaviest = MathF.Max(CollideWithShapes ? Contacts.HeaviestBody(World) : 0f, AttachmentSolver.HeaviestBody(World, Attachments));
             ScaleInertia(heaviest / (InertiaRatio * TotalMass));
+            if (Tets.Length > 0) TetData.Pack(W, FreeW, M);
         }
 
         /// <summary>
@@ -167,14 +168,14 @@ namespace Fulcrum.SoftBodies
         /// <summary>Every element family, colour by colour: the position solve, or the damping pass.</summary>
         void RunElements(float h, bool damping, IParallelScheduler? pool)
         {
-            if (Tets.Length > 0) RunColors(TetJob(h, damping), TetColors, pool);
+            if (Tets.Length > 0) RunColors(TetJob(h, damping), TetColors, pool, damping ? 1 : 0);
             if (Tris.Length > 0)
             {
                 _membraneJob ??= new MembraneRangeJob(this);
                 _membraneJob.H = h;
                 _membraneJob.DampingTime = DampingTime;
                 _membraneJob.Damping = damping;
-                RunColors(_membraneJob, TriColors, pool);
+                RunColors(_membraneJob, TriColors, pool, damping ? 3 : 2);
             }
             if (Bends.Length > 0)
             {
@@ -182,7 +183,7 @@ namespace Fulcrum.SoftBodies
                 _bendingJob.H = h;
                 _bendingJob.DampingTime = DampingTime;
                 _bendingJob.Damping = damping;
-                RunColors(_bendingJob, BendColors, pool);
+                RunColors(_bendingJob, BendColors, pool, damping ? 5 : 4);
             }
         }
 
@@ -196,7 +197,11 @@ namespace Fulcrum.SoftBodies
                 Array.Copy(_baseM!, M, M.Length);
                 _inertiaScale = 1f;
             }
-            if (Plasticity.Enabled && Tets.Length > 0) PlasticFlow.Apply(this, dt);
+            if (Plasticity.Enabled && Tets.Length > 0)
+            {
+                PlasticFlow.Apply(this, dt);
+                TetData.LoadElements(Tets);
+            }
         }
 
         RangeJob TetJob(float h, bool damping)
@@ -221,16 +226,28 @@ namespace Fulcrum.SoftBodies
 
         // Elements a thread takes at a time: a colour of fewer than two such chunks runs on the
         // caller, as waking a thread costs more than a few hundred elements (measured: with
-        // 32-element chunks a 10k-tet box ran 2-3 times slower on 2 threads than on 1).
+        // 32-element chunks a 10k-tet box ran 2-3 times slower on 2 threads than on 1). A
+        // multiple of eight, the tet kernels' block.
         const int MinChunk = 256;
 
-        static void RunColors(RangeJob job, int[] colors, IParallelScheduler? pool)
+        // Pool or calling thread, per element family and pass (tets, membranes, bends; position or damping).
+        readonly ThreadChoice[] _threadChoice = { new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice() };
+
+        void RunColors(RangeJob job, int[] colors, IParallelScheduler? pool, int choice)
         {
+            if (pool == null)
+            {
+                for (int c = 0; c + 1 < colors.Length; c++) job.Execute(colors[c], colors[c + 1]);
+                return;
+            }
+            ThreadChoice chooser = _threadChoice[choice];
+            bool parallel = chooser.Begin();
             for (int c = 0; c + 1 < colors.Length; c++)
             {
-                if (pool != null) pool.For(job, colors[c], colors[c + 1], MinChunk);
+                if (parallel) pool.For(job, colors[c], colors[c + 1], MinChunk);
                 else job.Execute(colors[c], colors[c + 1]);
             }
+            chooser.End(colors[colors.Length - 1]);
         }
     }
 }

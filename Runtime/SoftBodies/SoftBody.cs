@@ -34,7 +34,10 @@ namespace Fulcrum.SoftBodies
         internal readonly TetElement[] Tets;
         internal readonly int[] TetColors;
         internal readonly Vector2[] TetLambda;
+        // Carries the kept gradients in saved states only; the solver keeps them in TetData.
         internal readonly TetGradients[] TetGrad;
+        // The tets as the solver streams them (structure of arrays, same order as Tets).
+        internal readonly TetStream TetData;
         internal readonly int[] TetOfMeshTet;
         internal readonly float[] PlasticStrain;
         internal readonly TriangleElement[] Tris;
@@ -124,6 +127,9 @@ namespace Fulcrum.SoftBodies
                 M[a] += share; M[b] += share; M[c] += share; M[d] += share;
                 RestMeasure += volume;
             }
+
+            TetData = new TetStream(Tets.Length, n);
+            TetData.LoadElements(Tets);
 
             int[] meshTris = mesh.TriangleArray;
             if (meshTris.Length > 0)

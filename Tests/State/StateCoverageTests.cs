@@ -46,6 +46,10 @@ namespace Fulcrum.Tests.State
             // Newton solver are saved by SoftBody.WriteState and checked by the round-trip tests), job objects and scratch.
             "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem._free", "SoftBodySystem.Diverged",
             "SoftBody._tetJob", "SoftBody._membraneJob", "SoftBody._bendingJob", "SoftBody.Contacts", "SoftBody.SelfContacts", "SoftBody._scratch",
+            // The tet kernels' (W, FreeW, M) per vertex: packed from the saved arrays at the start of every step.
+            "TetStream.Masses",
+            // Timing of past passes (pool or calling thread); the choice never changes results.
+            "SoftBody._threadChoice",
         };
 
         // Pools whose entries past a count are spare (stale from earlier use, never read): the

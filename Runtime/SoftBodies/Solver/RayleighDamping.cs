@@ -27,34 +27,38 @@ namespace Fulcrum.SoftBodies
     {
         /// <summary>
         /// Damps tets [start, end) (one colour: no shared vertex) along the gradients the last
-        /// position iteration kept (<see cref="TetGradients"/>, taken just before that
+        /// position iteration kept (<see cref="TetStream.Gradients"/>, taken just before that
         /// iteration's correction rather than at the final x). Any direction keeps the update
         /// dissipative and momentum-free; the torque-free projection about the final x keeps the
         /// angular momentum exact.
         /// </summary>
-        public static void Tets(float deviatoricStiffness, float hydrostaticStiffness, TetElement[] tets, TetGradients[] grads,
+        public static void Tets(float deviatoricStiffness, float hydrostaticStiffness, TetStream tets,
             Vector3[] x, Vector3[] v, float[] w, float[] m, float[] free, int start, int end, float h, float dampingTime)
         {
             // 1 / (h b) per unit rest volume.
             float invD = 1f / (h * dampingTime * deviatoricStiffness), invH = 1f / (h * dampingTime * hydrostaticStiffness);
+            int n = tets.Count;
+            int[] vertices = tets.Vertices;
+            float[] g = tets.Gradients;
             for (int e = start; e < end; e++)
             {
-                ref TetElement t = ref tets[e];
-                float w0 = w[t.A], w1 = w[t.B], w2 = w[t.C], w3 = w[t.D];
+                int a = vertices[e], b = vertices[n + e], c = vertices[2 * n + e], d = vertices[3 * n + e];
+                float w0 = w[a], w1 = w[b], w2 = w[c], w3 = w[d];
                 if (w0 + w1 + w2 + w3 == 0f) continue;
-                ref TetGradients g = ref grads[e];
-                Vector3 v0 = v[t.A], v1 = v[t.B], v2 = v[t.C], v3 = v[t.D];
-                float sD = Vector3.Dot(g.D0, v0) + Vector3.Dot(g.D1, v1) + Vector3.Dot(g.D2, v2) + Vector3.Dot(g.D3, v3);
-                float sH = Vector3.Dot(g.H0, v0) + Vector3.Dot(g.H1, v1) + Vector3.Dot(g.H2, v2) + Vector3.Dot(g.H3, v3);
-                float invV = 1f / t.RestVolume;
-                if (!XpbdConstraintPair.Solve(g.KDD + invD * invV, g.KDH, g.KHH + invH * invV, sD, sH, out float mD, out float mH)) continue;
-                Vector3 p0 = -(mD * g.D0 + mH * g.H0), p1 = -(mD * g.D1 + mH * g.H1), p2 = -(mD * g.D2 + mH * g.H2), p3 = -(mD * g.D3 + mH * g.H3);
-                if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f && free[t.D] > 0f)
-                    TorqueFree.Project(x[t.A], x[t.B], x[t.C], x[t.D], m[t.A], m[t.B], m[t.C], m[t.D], ref p0, ref p1, ref p2, ref p3);
-                v[t.A] = v0 + w0 * p0;
-                v[t.B] = v1 + w1 * p1;
-                v[t.C] = v2 + w2 * p2;
-                v[t.D] = v3 + w3 * p3;
+                Vector3 gD0 = tets.Get(0, e), gD1 = tets.Get(3, e), gD2 = tets.Get(6, e), gD3 = tets.Get(9, e);
+                Vector3 gH0 = tets.Get(12, e), gH1 = tets.Get(15, e), gH2 = tets.Get(18, e), gH3 = tets.Get(21, e);
+                Vector3 v0 = v[a], v1 = v[b], v2 = v[c], v3 = v[d];
+                float sD = Vector3.Dot(gD0, v0) + Vector3.Dot(gD1, v1) + Vector3.Dot(gD2, v2) + Vector3.Dot(gD3, v3);
+                float sH = Vector3.Dot(gH0, v0) + Vector3.Dot(gH1, v1) + Vector3.Dot(gH2, v2) + Vector3.Dot(gH3, v3);
+                float invV = 1f / tets.RestVolume[e];
+                if (!XpbdConstraintPair.Solve(g[24 * n + e] + invD * invV, g[25 * n + e], g[26 * n + e] + invH * invV, sD, sH, out float mD, out float mH)) continue;
+                Vector3 p0 = -(mD * gD0 + mH * gH0), p1 = -(mD * gD1 + mH * gH1), p2 = -(mD * gD2 + mH * gH2), p3 = -(mD * gD3 + mH * gH3);
+                if (free[a] > 0f && free[b] > 0f && free[c] > 0f && free[d] > 0f)
+                    TorqueFree.Project(x[a], x[b], x[c], x[d], m[a], m[b], m[c], m[d], ref p0, ref p1, ref p2, ref p3);
+                v[a] = v0 + w0 * p0;
+                v[b] = v1 + w1 * p1;
+                v[c] = v2 + w2 * p2;
+                v[d] = v3 + w3 * p3;
             }
         }
 

@@ -19,8 +19,22 @@ namespace Fulcrum.SoftBodies
 
         public override void Execute(int start, int end)
         {
-            if (Damping) RayleighDamping.Tets(_model.DeviatoricStiffness, _model.HydrostaticStiffness, _body.Tets, _body.TetGrad, _body.X, _body.V, _body.W, _body.M, _body.FreeW, start, end, H, DampingTime);
-            else XpbdTetSolver.Solve(_model, _body.Tets, _body.TetLambda, DampingTime > 0f ? _body.TetGrad : null, _body.X, _body.XPrev, _body.W, _body.M, _body.FreeW, start, end, H);
+            SoftBody b = _body;
+            if (Damping)
+            {
+#if NET
+                if (TetStream.WideKernels) start = RayleighDampingWide.Tets(_model.DeviatoricStiffness, _model.HydrostaticStiffness, b.TetData, b.X, b.V, start, end, H, DampingTime);
+#endif
+                RayleighDamping.Tets(_model.DeviatoricStiffness, _model.HydrostaticStiffness, b.TetData, b.X, b.V, b.W, b.M, b.FreeW, start, end, H, DampingTime);
+            }
+            else
+            {
+#if NET
+                if (TetStream.WideKernels && _model is StableNeoHookeanEnergy stable)
+                    start = XpbdTetSolverWide.Solve(stable, b.TetData, b.TetLambda, DampingTime > 0f, b.X, b.XPrev, start, end, H);
+#endif
+                XpbdTetSolver.Solve(_model, b.TetData, b.TetLambda, DampingTime > 0f, b.X, b.XPrev, b.W, b.M, b.FreeW, start, end, H);
+            }
         }
     }
 }

@@ -16,35 +16,48 @@ namespace Fulcrum.SoftBodies
         /// One Gauss-Seidel pass over tets [start, end). Undamped: damping is a velocity pass
         /// after the substep (<see cref="RayleighDamping"/>). Each correction is made free of
         /// net angular impulse (<see cref="TorqueFree"/>) unless the tet has a pinned or attached vertex.
-        /// <paramref name="keep"/>, when not null, receives each tet's gradients for the damping pass.
+        /// With <paramref name="keep"/> each tet's gradients are stored in the stream for the damping pass.
         /// </summary>
-        public static void Solve<TModel>(in TModel model, TetElement[] tets, Vector2[] lambdas, TetGradients[]? keep, Vector3[] x, Vector3[] xPrev,
+        public static void Solve<TModel>(in TModel model, TetStream tets, Vector2[] lambdas, bool keep, Vector3[] x, Vector3[] xPrev,
             float[] w, float[] m, float[] free, int start, int end, float h)
             where TModel : struct, IHyperelasticModel
         {
+            int n = tets.Count;
+            int[] vertices = tets.Vertices;
             float invH2 = 1f / (h * h);
             // Compliance per unit volume over h^2; divided by each tet's rest volume below.
             float alphaDev = invH2 / model.DeviatoricStiffness;
             float alphaVol = invH2 / model.HydrostaticStiffness;
             for (int e = start; e < end; e++)
             {
-                ref TetElement t = ref tets[e];
-                float w0 = w[t.A], w1 = w[t.B], w2 = w[t.C], w3 = w[t.D];
+                int a = vertices[e], b = vertices[n + e], c = vertices[2 * n + e], d = vertices[3 * n + e];
+                float w0 = w[a], w1 = w[b], w2 = w[c], w3 = w[d];
                 if (w0 + w1 + w2 + w3 == 0f) continue;
-                Vector3 x0 = x[t.A], x1 = x[t.B], x2 = x[t.C], x3 = x[t.D];
-                Mat3 f = DeformationGradient.Of(x0, x1, x2, x3, t.RestInverse);
+                Vector3 x0 = x[a], x1 = x[b], x2 = x[c], x3 = x[d];
+                Mat3 restInverse = RestInverse(tets, e);
+                Mat3 f = DeformationGradient.Of(x0, x1, x2, x3, restInverse);
                 model.Constraints(f, out float cD, out Mat3 dD, out float cH, out Mat3 dH);
-                DeformationGradient.VertexGradients(dD, t.RestInverse, out Vector3 d0, out Vector3 d1, out Vector3 d2, out Vector3 d3);
-                DeformationGradient.VertexGradients(dH, t.RestInverse, out Vector3 h0, out Vector3 h1, out Vector3 h2, out Vector3 h3);
+                DeformationGradient.VertexGradients(dD, restInverse, out Vector3 d0, out Vector3 d1, out Vector3 d2, out Vector3 d3);
+                DeformationGradient.VertexGradients(dH, restInverse, out Vector3 h0, out Vector3 h1, out Vector3 h2, out Vector3 h3);
 
                 float kDD = w0 * d0.LengthSquared() + w1 * d1.LengthSquared() + w2 * d2.LengthSquared() + w3 * d3.LengthSquared();
                 float kHH = w0 * h0.LengthSquared() + w1 * h1.LengthSquared() + w2 * h2.LengthSquared() + w3 * h3.LengthSquared();
                 float kDH = w0 * Vector3.Dot(d0, h0) + w1 * Vector3.Dot(d1, h1) + w2 * Vector3.Dot(d2, h2) + w3 * Vector3.Dot(d3, h3);
-                if (keep != null)
+                if (keep)
                 {
-                    keep[e] = new TetGradients { D0 = d0, D1 = d1, D2 = d2, D3 = d3, H0 = h0, H1 = h1, H2 = h2, H3 = h3, KDD = kDD, KDH = kDH, KHH = kHH };
+                    tets.Set(0, e, d0);
+                    tets.Set(3, e, d1);
+                    tets.Set(6, e, d2);
+                    tets.Set(9, e, d3);
+                    tets.Set(12, e, h0);
+                    tets.Set(15, e, h1);
+                    tets.Set(18, e, h2);
+                    tets.Set(21, e, h3);
+                    tets.Gradients[24 * n + e] = kDD;
+                    tets.Gradients[25 * n + e] = kDH;
+                    tets.Gradients[26 * n + e] = kHH;
                 }
-                float invV = 1f / t.RestVolume;
+                float invV = 1f / tets.RestVolume[e];
                 float aD = alphaDev * invV, aH = alphaVol * invV;
                 ref Vector2 lambda = ref lambdas[e];
                 float rD = -cD - aD * lambda.X;
@@ -53,13 +66,22 @@ namespace Fulcrum.SoftBodies
                 lambda.X += dlD;
                 lambda.Y += dlH;
                 Vector3 g0 = dlD * d0 + dlH * h0, g1 = dlD * d1 + dlH * h1, g2 = dlD * d2 + dlH * h2, g3 = dlD * d3 + dlH * h3;
-                if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f && free[t.D] > 0f)
-                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], xPrev[t.D], m[t.A], m[t.B], m[t.C], m[t.D], ref g0, ref g1, ref g2, ref g3);
-                x[t.A] = x0 + w0 * g0;
-                x[t.B] = x1 + w1 * g1;
-                x[t.C] = x2 + w2 * g2;
-                x[t.D] = x3 + w3 * g3;
+                if (free[a] > 0f && free[b] > 0f && free[c] > 0f && free[d] > 0f)
+                    TorqueFree.Project(xPrev[a], xPrev[b], xPrev[c], xPrev[d], m[a], m[b], m[c], m[d], ref g0, ref g1, ref g2, ref g3);
+                x[a] = x0 + w0 * g0;
+                x[b] = x1 + w1 * g1;
+                x[c] = x2 + w2 * g2;
+                x[d] = x3 + w3 * g3;
             }
+        }
+
+        /// <summary>Dm^-1 of element <paramref name="e"/> from the stream's columns.</summary>
+        public static Mat3 RestInverse(TetStream tets, int e)
+        {
+            int n = tets.Count;
+            float[] r = tets.RestInverse;
+            return new Mat3(new Vector3(r[e], r[n + e], r[2 * n + e]), new Vector3(r[3 * n + e], r[4 * n + e], r[5 * n + e]),
+                new Vector3(r[6 * n + e], r[7 * n + e], r[8 * n + e]));
         }
     }
 }

@@ -1,0 +1,247 @@
+#if NET
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
+using System.Runtime.Intrinsics.X86;
+
+namespace Fulcrum.SoftBodies
+{
+    /// <summary>
+    /// <see cref="XpbdTetSolver"/> for the stable Neo-Hookean model, eight tets of one colour
+    /// at a time (AVX): vertex data moved into lanes by transposes (<see cref="Lanes8"/>), the
+    /// element data read straight from <see cref="TetStream"/>'s runs, and the corrections
+    /// written back lane by lane (the elements of a colour share no vertex, so the writes
+    /// never collide). Every float and double operation is the scalar kernel's, in its order
+    /// (no fused multiply-add; the logarithm is Math.Log per lane), so the results are
+    /// bit-identical to it and the solve does not depend on how a colour is split into
+    /// blocks, chunks or threads.
+    /// </summary>
+    internal static class XpbdTetSolverWide
+    {
+        /// <summary>
+        /// Solves the whole blocks of eight in [start, end); returns where the rest (fewer
+        /// than eight, for the scalar kernel) begins.
+        /// </summary>
+        public static int Solve(in StableNeoHookeanEnergy model, TetStream tets, Vector2[] lambdas, bool keep, Vector3[] x, Vector3[] xPrev,
+            int start, int end, float h)
+        {
+            float invH2 = 1f / (h * h);
+            var k = new Constants
+            {
+                AlphaDev = Vector256.Create(invH2 / model.DeviatoricStiffness),
+                AlphaVol = Vector256.Create(invH2 / model.HydrostaticStiffness),
+                Beta = Vector256.Create((double)model.Beta),
+                TwoBeta = Vector256.Create(2.0 * model.Beta),
+            };
+            var block = new Block();
+            int e = start;
+            for (; e + 8 <= end; e += 8)
+            {
+                if (!Gradients(ref block, k, tets, x, e)) continue;
+                uint write = Multipliers(ref block, k, tets, lambdas, keep, e);
+                if (write != 0) Correct(ref block, tets, x, xPrev, e, write);
+            }
+            return e;
+        }
+
+        struct Constants
+        {
+            public Vector256<float> AlphaDev, AlphaVol;
+            public Vector256<double> Beta, TwoBeta;
+        }
+
+        // One block's values between the stages. The kernel is split into three methods so
+        // that the JIT inlines every helper inside each (one method of the whole kernel runs
+        // past its inlining limits and leaves calls and spills in the loop).
+        struct Block
+        {
+            public Lanes8 X0, X1, X2, X3, D0, D1, D2, D3, H0, H1, H2, H3, G0, G1, G2, G3, Mass0, Mass1, Mass2, Mass3;
+            public Vector256<float> Active, CD, CH, Solved;
+            public bool All;
+        }
+
+        // Inverse masses, positions, F, the constraints and their vertex gradients; false when every lane is pinned.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static bool Gradients(ref Block b, in Constants k, TetStream tets, Vector3[] x, int e)
+        {
+            int n = tets.Count;
+            int[] vertices = tets.Vertices;
+            Vector4[] masses = tets.Masses;
+            b.Mass0 = Lanes8.Gather(masses, vertices, e);
+            b.Mass1 = Lanes8.Gather(masses, vertices, n + e);
+            b.Mass2 = Lanes8.Gather(masses, vertices, 2 * n + e);
+            b.Mass3 = Lanes8.Gather(masses, vertices, 3 * n + e);
+            Vector256<float> active = ~Vector256.Equals(b.Mass0.X + b.Mass1.X + b.Mass2.X + b.Mass3.X, Vector256<float>.Zero);
+            uint activeBits = active.ExtractMostSignificantBits();
+            if (activeBits == 0) return false;
+            b.Active = active;
+            b.All = activeBits == 0xFF;
+
+            Lanes8 x0 = Lanes8.Gather(x, vertices, e), x1 = Lanes8.Gather(x, vertices, n + e);
+            Lanes8 x2 = Lanes8.Gather(x, vertices, 2 * n + e), x3 = Lanes8.Gather(x, vertices, 3 * n + e);
+            b.X0 = x0;
+            b.X1 = x1;
+            b.X2 = x2;
+            b.X3 = x3;
+            float[] rest = tets.RestInverse;
+            Lanes8 r0 = Lanes8.Load(rest, 0, n, e), r1 = Lanes8.Load(rest, 3, n, e), r2 = Lanes8.Load(rest, 6, n, e);
+            // F = Ds Dm^-1, column j = Ds (column j of Dm^-1).
+            Lanes8 e0 = x1 - x0, e1 = x2 - x0, e2 = x3 - x0;
+            Lanes8 f0 = e0 * r0.X + e1 * r0.Y + e2 * r0.Z;
+            Lanes8 f1 = e0 * r1.X + e1 * r1.Y + e2 * r1.Z;
+            Lanes8 f2 = e0 * r2.X + e1 * r2.Y + e2 * r2.Z;
+            // cof F (= dC_H/dF).
+            Lanes8 k0 = Lanes8.Cross(f1, f2), k1 = Lanes8.Cross(f2, f0), k2 = Lanes8.Cross(f0, f1);
+
+            // The deviatoric constraint in double, per half (StableNeoHookeanEnergy.Constraints).
+            Half(f0, f1, f2, upper: false, k.Beta, k.TwoBeta, out Vector256<double> sLo, out Vector256<double> tLo, out Vector256<double> cLo, out Vector256<double> jLo, out Vector256<long> onLo);
+            Half(f0, f1, f2, upper: true, k.Beta, k.TwoBeta, out Vector256<double> sHi, out Vector256<double> tHi, out Vector256<double> cHi, out Vector256<double> jHi, out Vector256<long> onHi);
+            Vector256<float> dev = Vector256.Narrow(onLo, onHi).AsSingle();
+            Vector256<float> s = Vector256.Narrow(sLo, sHi), t = Vector256.Narrow(tLo, tHi);
+            b.CD = Avx.BlendVariable(Vector256<float>.Zero, Vector256.Narrow(cLo, cHi), dev);
+            b.CH = Vector256.Narrow(jLo, jHi);
+            Lanes8 zero = default;
+            Lanes8 dD0 = Lanes8.Select(dev, f0 * s + k0 * t, zero);
+            Lanes8 dD1 = Lanes8.Select(dev, f1 * s + k1 * t, zero);
+            Lanes8 dD2 = Lanes8.Select(dev, f2 * s + k2 * t, zero);
+            VertexGradients(dD0, dD1, dD2, r0, r1, r2, out b.D0, out b.D1, out b.D2, out b.D3);
+            VertexGradients(k0, k1, k2, r0, r1, r2, out b.H0, out b.H1, out b.H2, out b.H3);
+            return true;
+        }
+
+        // The 2x2 multiplier update (XpbdConstraintPair) and the impulses g_k; returns the lanes to write.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static uint Multipliers(ref Block b, in Constants k, TetStream tets, Vector2[] lambdas, bool keep, int e)
+        {
+            int n = tets.Count;
+            Vector256<float> w0 = b.Mass0.X, w1 = b.Mass1.X, w2 = b.Mass2.X, w3 = b.Mass3.X;
+            Vector256<float> kDD = w0 * Lanes8.Dot(b.D0, b.D0) + w1 * Lanes8.Dot(b.D1, b.D1) + w2 * Lanes8.Dot(b.D2, b.D2) + w3 * Lanes8.Dot(b.D3, b.D3);
+            Vector256<float> kHH = w0 * Lanes8.Dot(b.H0, b.H0) + w1 * Lanes8.Dot(b.H1, b.H1) + w2 * Lanes8.Dot(b.H2, b.H2) + w3 * Lanes8.Dot(b.H3, b.H3);
+            Vector256<float> kDH = w0 * Lanes8.Dot(b.D0, b.H0) + w1 * Lanes8.Dot(b.D1, b.H1) + w2 * Lanes8.Dot(b.D2, b.H2) + w3 * Lanes8.Dot(b.D3, b.H3);
+            if (keep) Keep(tets.Gradients, n, e, b.Active, b.All, b.D0, b.D1, b.D2, b.D3, b.H0, b.H1, b.H2, b.H3, kDD, kDH, kHH);
+
+            Vector256<float> invV = Vector256<float>.One / Lanes8.Load(tets.RestVolume, e);
+            Vector256<float> aD = k.AlphaDev * invV, aH = k.AlphaVol * invV;
+            ref float lambda = ref Unsafe.As<Vector2, float>(ref lambdas[e]);
+            Vector256<float> lo = Vector256.LoadUnsafe(ref lambda), hi = Vector256.LoadUnsafe(ref lambda, 8);
+            // De-interleave (X, Y) pairs: shuffle within 128-bit halves, then put the 64-bit pieces in order.
+            Vector256<float> lambdaD = Avx2.Permute4x64(Avx.Shuffle(lo, hi, 0x88).AsDouble(), 0xD8).AsSingle();
+            Vector256<float> lambdaH = Avx2.Permute4x64(Avx.Shuffle(lo, hi, 0xDD).AsDouble(), 0xD8).AsSingle();
+            Vector256<float> rD = -b.CD - aD * lambdaD;
+            Vector256<float> rH = -b.CH - aH * lambdaH;
+            Vector256<float> a11 = kDD + aD, a22 = kHH + aH;
+            Vector256<float> det = a11 * a22 - kDH * kDH;
+            Vector256<float> solved = Vector256.GreaterThan(det, Vector256.Create(1e-30f) * a11 * a22) & b.Active;
+            uint write = solved.ExtractMostSignificantBits();
+            if (write == 0) return 0;
+            b.Solved = solved;
+            Vector256<float> invDet = Vector256<float>.One / det;
+            Vector256<float> dlD = Avx.BlendVariable(Vector256<float>.Zero, (rD * a22 - rH * kDH) * invDet, solved);
+            Vector256<float> dlH = Avx.BlendVariable(Vector256<float>.Zero, (a11 * rH - kDH * rD) * invDet, solved);
+            // Lambda is never -0 (it starts at +0), so adding the +0 of an unsolved lane keeps its bits.
+            Vector256<float> newD = Avx2.Permute4x64((lambdaD + dlD).AsDouble(), 0xD8).AsSingle();
+            Vector256<float> newH = Avx2.Permute4x64((lambdaH + dlH).AsDouble(), 0xD8).AsSingle();
+            Avx.UnpackLow(newD, newH).StoreUnsafe(ref lambda);
+            Avx.UnpackHigh(newD, newH).StoreUnsafe(ref lambda, 8);
+            b.G0 = dlD * b.D0 + dlH * b.H0;
+            b.G1 = dlD * b.D1 + dlH * b.H1;
+            b.G2 = dlD * b.D2 + dlH * b.H2;
+            b.G3 = dlD * b.D3 + dlH * b.H3;
+            return write;
+        }
+
+        // The torque-free projection and the position writes.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static void Correct(ref Block b, TetStream tets, Vector3[] x, Vector3[] xPrev, int e, uint write)
+        {
+            int n = tets.Count;
+            int[] vertices = tets.Vertices;
+            Vector256<float> free = Vector256.GreaterThan(b.Mass0.Y, Vector256<float>.Zero) & Vector256.GreaterThan(b.Mass1.Y, Vector256<float>.Zero)
+                & Vector256.GreaterThan(b.Mass2.Y, Vector256<float>.Zero) & Vector256.GreaterThan(b.Mass3.Y, Vector256<float>.Zero) & b.Solved;
+            Lanes8 g0 = b.G0, g1 = b.G1, g2 = b.G2, g3 = b.G3;
+            if (free.ExtractMostSignificantBits() != 0)
+            {
+                Lanes8 p0 = Lanes8.Gather(xPrev, vertices, e), p1 = Lanes8.Gather(xPrev, vertices, n + e);
+                Lanes8 p2 = Lanes8.Gather(xPrev, vertices, 2 * n + e), p3 = Lanes8.Gather(xPrev, vertices, 3 * n + e);
+                TorqueFreeWide.Project(p0, p1, p2, p3, b.Mass0.Z, b.Mass1.Z, b.Mass2.Z, b.Mass3.Z, free, ref g0, ref g1, ref g2, ref g3);
+            }
+            Lanes8.Scatter(x, vertices, e, write, b.X0 + b.Mass0.X * g0);
+            Lanes8.Scatter(x, vertices, n + e, write, b.X1 + b.Mass1.X * g1);
+            Lanes8.Scatter(x, vertices, 2 * n + e, write, b.X2 + b.Mass2.X * g2);
+            Lanes8.Scatter(x, vertices, 3 * n + e, write, b.X3 + b.Mass3.X * g3);
+        }
+
+        // StableNeoHookeanEnergy.Constraints' double part for four lanes: J - 1, D, and where
+        // D > RestTolerance, C_D = sqrt(D) and the factors s, t of dC_D/dF = s F + t cof F.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Half(in Lanes8 f0, in Lanes8 f1, in Lanes8 f2, bool upper, Vector256<double> beta, Vector256<double> twoBeta,
+            out Vector256<double> s, out Vector256<double> t, out Vector256<double> c, out Vector256<double> j, out Vector256<long> on)
+        {
+            Vector256<double> c0x = Widen(f0.X, upper), c0y = Widen(f0.Y, upper), c0z = Widen(f0.Z, upper);
+            Vector256<double> c1x = Widen(f1.X, upper), c1y = Widen(f1.Y, upper), c1z = Widen(f1.Z, upper);
+            Vector256<double> c2x = Widen(f2.X, upper), c2y = Widen(f2.Y, upper), c2z = Widen(f2.Z, upper);
+            Vector256<double> ic = c0x * c0x + c0y * c0y + c0z * c0z + c1x * c1x + c1y * c1y + c1z * c1z + c2x * c2x + c2y * c2y + c2z * c2z;
+            Vector256<double> det = c0x * (c1y * c2z - c2y * c1z) - c1x * (c0y * c2z - c2y * c0z) + c2x * (c0y * c1z - c1y * c0z);
+            j = det - Vector256.Create(1.0);
+            Vector256<double> a = ic - Vector256.Create(3.0);
+            Vector256<double> arg = Vector256.Create(1.0) + Vector256.Create(0.25) * a;
+            Vector256<double> log = Vector256.Create(Math.Log(arg.GetElement(0)), Math.Log(arg.GetElement(1)), Math.Log(arg.GetElement(2)), Math.Log(arg.GetElement(3)));
+            Vector256<double> d = Vector256.Max(Vector256<double>.Zero, a - log - Vector256.Create(1.5) * j + beta * j * j);
+            Vector256<double> mask = Vector256.GreaterThan(d, Vector256.Create(DeformationGradient.RestTolerance));
+            on = mask.AsInt64();
+            c = Vector256.Sqrt(d);
+            s = ic / ((ic + Vector256.Create(1.0)) * c);
+            t = (twoBeta * j - Vector256.Create(1.5)) / (Vector256.Create(2.0) * c);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static Vector256<double> Widen(Vector256<float> v, bool upper) => upper ? Vector256.WidenUpper(v) : Vector256.WidenLower(v);
+
+        // DeformationGradient.VertexGradients: g_k = G (row k of Dm^-1), g_0 = -(g_1 + g_2 + g_3).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void VertexGradients(in Lanes8 g0c, in Lanes8 g1c, in Lanes8 g2c, in Lanes8 r0, in Lanes8 r1, in Lanes8 r2,
+            out Lanes8 v0, out Lanes8 v1, out Lanes8 v2, out Lanes8 v3)
+        {
+            v1 = g0c * r0.X + g1c * r1.X + g2c * r2.X;
+            v2 = g0c * r0.Y + g1c * r1.Y + g2c * r2.Y;
+            v3 = g0c * r0.Z + g1c * r1.Z + g2c * r2.Z;
+            v0 = -(v1 + v2 + v3);
+        }
+
+        // Stores the gradients for the damping pass; lanes of fully pinned tets keep their old values (as the scalar kernel does).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Keep(float[] g, int n, int e, Vector256<float> active, bool all, in Lanes8 d0, in Lanes8 d1, in Lanes8 d2, in Lanes8 d3,
+            in Lanes8 h0, in Lanes8 h1, in Lanes8 h2, in Lanes8 h3, Vector256<float> kDD, Vector256<float> kDH, Vector256<float> kHH)
+        {
+            Put(g, n, e, 0, active, all, d0);
+            Put(g, n, e, 3, active, all, d1);
+            Put(g, n, e, 6, active, all, d2);
+            Put(g, n, e, 9, active, all, d3);
+            Put(g, n, e, 12, active, all, h0);
+            Put(g, n, e, 15, active, all, h1);
+            Put(g, n, e, 18, active, all, h2);
+            Put(g, n, e, 21, active, all, h3);
+            Put(g, 24 * n + e, active, all, kDD);
+            Put(g, 25 * n + e, active, all, kDH);
+            Put(g, 26 * n + e, active, all, kHH);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Put(float[] g, int n, int e, int field, Vector256<float> active, bool all, in Lanes8 v)
+        {
+            Put(g, field * n + e, active, all, v.X);
+            Put(g, (field + 1) * n + e, active, all, v.Y);
+            Put(g, (field + 2) * n + e, active, all, v.Z);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static void Put(float[] g, int at, Vector256<float> active, bool all, Vector256<float> v)
+        {
+            if (!all) v = Avx.BlendVariable(Lanes8.Load(g, at), v, active);
+            Lanes8.Store(g, at, v);
+        }
+    }
+}
+#endif
