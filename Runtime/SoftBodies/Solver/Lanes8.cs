@@ -3,6 +3,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
+using Fulcrum.Dynamics;
 using System.Runtime.Intrinsics.X86;
 
 namespace Fulcrum.SoftBodies
@@ -94,7 +95,7 @@ namespace Fulcrum.SoftBodies
             Vector256<float> m1 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 1)).AsVector128Unsafe(), Unsafe.Add(ref b, Unsafe.Add(ref i, 5)).AsVector128Unsafe());
             Vector256<float> m2 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 2)).AsVector128Unsafe(), Unsafe.Add(ref b, Unsafe.Add(ref i, 6)).AsVector128Unsafe());
             Vector256<float> m3 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 3)).AsVector128Unsafe(), Unsafe.Add(ref b, Unsafe.Add(ref i, 7)).AsVector128Unsafe());
-            Transpose(m0, m1, m2, m3, out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out _);
+            SolverBodyLanes.Transpose(m0, m1, m2, m3, out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out _);
             return new Lanes8(x, y, z);
         }
 
@@ -108,7 +109,7 @@ namespace Fulcrum.SoftBodies
             Vector256<float> m1 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 1)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 5)).AsVector128());
             Vector256<float> m2 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 2)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 6)).AsVector128());
             Vector256<float> m3 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 3)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 7)).AsVector128());
-            Transpose(m0, m1, m2, m3, out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out _);
+            SolverBodyLanes.Transpose(m0, m1, m2, m3, out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out _);
             return new Lanes8(x, y, z);
         }
 
@@ -116,7 +117,7 @@ namespace Fulcrum.SoftBodies
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Scatter(Vector3[] v, int[] index, int at, uint write, in Lanes8 value)
         {
-            Transpose(value.X, value.Y, value.Z, value.Z, out Vector256<float> r04, out Vector256<float> r15, out Vector256<float> r26, out Vector256<float> r37);
+            SolverBodyLanes.Transpose(value.X, value.Y, value.Z, value.Z, out Vector256<float> r04, out Vector256<float> r15, out Vector256<float> r26, out Vector256<float> r37);
             ref Vector3 b = ref MemoryMarshal.GetArrayDataReference(v);
             ref int i = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(index), at);
             if ((write & 1) != 0) Unsafe.Add(ref b, i) = r04.GetLower().AsVector3();
@@ -127,21 +128,6 @@ namespace Fulcrum.SoftBodies
             if ((write & 32) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 5)) = r15.GetUpper().AsVector3();
             if ((write & 64) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 6)) = r26.GetUpper().AsVector3();
             if ((write & 128) != 0) Unsafe.Add(ref b, Unsafe.Add(ref i, 7)) = r37.GetUpper().AsVector3();
-        }
-
-        // 4x4 transposes within both 128-bit halves at once.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Transpose(Vector256<float> a, Vector256<float> b, Vector256<float> c, Vector256<float> d,
-            out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out Vector256<float> w)
-        {
-            Vector256<float> t0 = Avx.UnpackLow(a, b);
-            Vector256<float> t1 = Avx.UnpackHigh(a, b);
-            Vector256<float> t2 = Avx.UnpackLow(c, d);
-            Vector256<float> t3 = Avx.UnpackHigh(c, d);
-            x = Avx.Shuffle(t0, t2, 0x44);
-            y = Avx.Shuffle(t0, t2, 0xEE);
-            z = Avx.Shuffle(t1, t3, 0x44);
-            w = Avx.Shuffle(t1, t3, 0xEE);
         }
     }
 }

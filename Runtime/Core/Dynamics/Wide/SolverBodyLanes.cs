@@ -69,9 +69,9 @@ namespace Fulcrum.Dynamics
             if ((write & 128) != 0) r37.GetUpper().StoreUnsafe(ref b7, o);
         }
 
-        // 4x4 transposes within both 128-bit halves at once.
+        // 4x4 transposes within both 128-bit halves at once (the soft bodies' Lanes8 uses it too).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Transpose(Vector256<float> a, Vector256<float> b, Vector256<float> c, Vector256<float> d,
+        internal static void Transpose(Vector256<float> a, Vector256<float> b, Vector256<float> c, Vector256<float> d,
             out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out Vector256<float> w)
         {
             Vector256<float> t0 = Avx.UnpackLow(a, b);
