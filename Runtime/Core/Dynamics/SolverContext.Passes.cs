@@ -87,6 +87,10 @@ namespace Fulcrum.Dynamics
                         Quaternion q = body.DeltaRotation * start0;
                         Integrator.RotateFreeBody(ref q, ref body.AngularVelocity, ii, s.InertiaFrame[slot], h);
                         body.DeltaRotation = q * Quaternion.Conjugate(start0);
+                        // The joints' impulses in the next substep act on the body as it is
+                        // turned now: a body that turns a radian in a step under impulses
+                        // computed with its start-of-step inertia gained energy (WorldFuzz).
+                        body.InverseInertia = Mat3.RotateDiagonal(Mat3.FromQuaternion(q * s.InertiaFrame[slot]), ii);
                     }
                     return;
                 }
