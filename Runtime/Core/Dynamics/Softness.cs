@@ -46,15 +46,47 @@ namespace Fulcrum.Dynamics
         /// <summary>This softness with its bias velocity capped at <paramref name="maxBias"/>.</summary>
         public Softness WithMaxBias(float maxBias) => new Softness(BiasRate, MassScale, ImpulseScale, maxBias);
 
-        /// <summary>The bias velocity for the error <paramref name="c"/>: biasRate c, capped at <see cref="MaxBias"/>.</summary>
-        public float Bias(float c) => Math.Clamp(BiasRate * c, -MaxBias, MaxBias);
-
-        /// <summary>The bias velocity for the error vector <paramref name="c"/>, its length capped at <see cref="MaxBias"/>.</summary>
-        public System.Numerics.Vector3 Bias(System.Numerics.Vector3 c)
+        /// <summary>
+        /// The row's coefficients for a bias of length <paramref name="biasLength"/> (biasRate
+        /// |C|). Below <see cref="MaxBias"/> they are this softness's own. Above it the bias is
+        /// scaled down by <paramref name="biasScale"/> = MaxBias / biasLength, and the spring is
+        /// stiffened by the same ratio r: massScale / impulseScale, which sets the force the row
+        /// holds at rest (lambda = m_eff (massScale / impulseScale) bias), is multiplied by r.
+        /// The row then still holds the force of the uncapped spring, k C, while pulling at
+        /// MaxBias at most, and tends to a rigid row as r grows. Capping the bias alone capped
+        /// the force too: a 1000 kg load on a chain of 1 kg links sank to the floor.
+        /// Continuous at r = 1.
+        /// </summary>
+        public void Capped(float biasLength, out float biasScale, out float massScale, out float impulseScale)
         {
-            System.Numerics.Vector3 v = BiasRate * c;
-            float length = v.Length();
-            return length > MaxBias ? v * (MaxBias / length) : v;
+            if (!(biasLength > MaxBias) || ImpulseScale == 0)
+            {
+                biasScale = biasLength > MaxBias ? MaxBias / biasLength : 1f;
+                massScale = MassScale;
+                impulseScale = ImpulseScale;
+                return;
+            }
+            float r = biasLength / MaxBias;
+            float q = MassScale / ImpulseScale * r;
+            biasScale = 1f / r;
+            impulseScale = 1f / (1f + q);
+            massScale = q * impulseScale;
+        }
+
+        /// <summary>The bias velocity for the error <paramref name="c"/> and the row's scales (see <see cref="Capped"/>).</summary>
+        public float Bias(float c, out float massScale, out float impulseScale)
+        {
+            float bias = BiasRate * c;
+            Capped(MathF.Abs(bias), out float k, out massScale, out impulseScale);
+            return bias * k;
+        }
+
+        /// <summary>The bias velocity for the error vector <paramref name="c"/> and the row's scales; the cap keeps the bias's direction.</summary>
+        public System.Numerics.Vector3 Bias(System.Numerics.Vector3 c, out float massScale, out float impulseScale)
+        {
+            System.Numerics.Vector3 bias = BiasRate * c;
+            Capped(bias.Length(), out float k, out massScale, out impulseScale);
+            return bias * k;
         }
 
         /// <summary>A rigid row without position feedback.</summary>

@@ -87,14 +87,22 @@ namespace Fulcrum.Dynamics
         public void SolveLimit(ref SolverBody a, ref SolverBody b, float C, in Softness soft, float invH, bool useBias)
         {
             if (C > 0) Solve(ref a, ref b, C * invH, 1, 0, 0, float.PositiveInfinity);
-            else if (useBias) Solve(ref a, ref b, soft.Bias(C), soft.MassScale, soft.ImpulseScale, 0, float.PositiveInfinity);
+            else if (useBias)
+            {
+                float bias = soft.Bias(C, out float massScale, out float impulseScale);
+                Solve(ref a, ref b, bias, massScale, impulseScale, 0, float.PositiveInfinity);
+            }
             else Solve(ref a, ref b, 0, 1, 0, 0, float.PositiveInfinity);
         }
 
         /// <summary>A two-sided row keeping C = 0, soft when <paramref name="useBias"/>.</summary>
         public void SolveEquality(ref SolverBody a, ref SolverBody b, float C, in Softness soft, bool useBias)
         {
-            if (useBias) Solve(ref a, ref b, soft.Bias(C), soft.MassScale, soft.ImpulseScale, float.NegativeInfinity, float.PositiveInfinity);
+            if (useBias)
+            {
+                float bias = soft.Bias(C, out float massScale, out float impulseScale);
+                Solve(ref a, ref b, bias, massScale, impulseScale, float.NegativeInfinity, float.PositiveInfinity);
+            }
             else Solve(ref a, ref b, 0, 1, 0, float.NegativeInfinity, float.PositiveInfinity);
         }
 

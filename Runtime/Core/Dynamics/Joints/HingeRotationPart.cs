@@ -69,16 +69,9 @@ namespace Fulcrum.Dynamics
             {
                 // The two errors' bias as one vector, so its cap keeps its direction.
                 float b1 = soft.BiasRate * c1, b2 = soft.BiasRate * c2;
-                float length = MathF.Sqrt(b1 * b1 + b2 * b2);
-                if (length > soft.MaxBias)
-                {
-                    b1 *= soft.MaxBias / length;
-                    b2 *= soft.MaxBias / length;
-                }
-                v1 += b1;
-                v2 += b2;
-                ms = soft.MassScale;
-                isc = soft.ImpulseScale;
+                soft.Capped(MathF.Sqrt(b1 * b1 + b2 * b2), out float k, out ms, out isc);
+                v1 += k * b1;
+                v2 += k * b2;
             }
             float d1 = -ms * (M11 * v1 + M12 * v2) - isc * Impulse1;
             float d2 = -ms * (M12 * v1 + M22 * v2) - isc * Impulse2;

@@ -190,8 +190,11 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>A spring toward C = 0: a soft row with the joint's own frequency and damping.</summary>
-        public static void SolveSpring(ref AxisConstraintPart row, ref SolverBody a, ref SolverBody b, float C, in Softness soft) =>
-            row.Solve(ref a, ref b, soft.Bias(C), soft.MassScale, soft.ImpulseScale, float.NegativeInfinity, float.PositiveInfinity);
+        public static void SolveSpring(ref AxisConstraintPart row, ref SolverBody a, ref SolverBody b, float C, in Softness soft)
+        {
+            float bias = soft.Bias(C, out float massScale, out float impulseScale);
+            row.Solve(ref a, ref b, bias, massScale, impulseScale, float.NegativeInfinity, float.PositiveInfinity);
+        }
 
         /// <summary>
         /// The rotation of frame B relative to frame A about A's x axis, in (-pi, pi]: the twist

@@ -38,7 +38,11 @@ namespace Fulcrum.Dynamics
         {
             Vector3 jv = b.AngularVelocity - a.AngularVelocity;
             Vector3 impulse;
-            if (useBias) impulse = -soft.MassScale * (EffectiveMass * (jv + soft.Bias(C))) - soft.ImpulseScale * Impulse;
+            if (useBias)
+            {
+                Vector3 bias = soft.Bias(C, out float massScale, out float impulseScale);
+                impulse = -massScale * (EffectiveMass * (jv + bias)) - impulseScale * Impulse;
+            }
             else impulse = -(EffectiveMass * jv);
             Impulse += impulse;
             Apply(ref a, ref b, impulse);
