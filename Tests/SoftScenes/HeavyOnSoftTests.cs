@@ -137,12 +137,17 @@ namespace Fulcrum.Tests.SoftScenes
             Assert.That(r.LateSpeed, Is.LessThan(0.02f), "at rest");
         }
 
+        // A plate tilted 3 degrees at the start, E x mass ratio x strain (friction on). The tilt
+        // decays everywhere, slower as the load nears the cube's shear buckling (about 13 %,
+        // SoftSolvers.md): measured late tilt 0.03-0.04 deg at 1 %, 0.38-0.40 at 5 %, 1.7 at 10 %
+        // (1.5 after 12 s, 1.1 after 24 s); the energy never rises above its start.
         [Test]
-        public void A_tilted_heavy_plate_levels_out_and_the_energy_never_grows()
+        public void A_tilted_heavy_plate_levels_out_and_the_energy_never_grows(
+            [Values(1e4f, 1e8f)] float youngs, [Values(10f, 1000f)] float ratio, [Values(0.01f, 0.05f, 0.10f)] float strain)
         {
-            PlateRun r = RunPlate(1e6f, 100, 0.05f, 360, tiltDeg: 3f);
-            TestContext.Out.WriteLine($"tilted start: late tilt {r.LateTilt:F2} deg, strain {r.Strain:F4} (closed form {r.Expected:F4}), energy growth {r.EnergyGrowth:E2} of the load's work");
-            Assert.That(r.LateTilt, Is.LessThan(1f), "a 3 degree tilt decays");
+            PlateRun r = RunPlate(youngs, ratio, strain, 360, tiltDeg: 3f);
+            TestContext.Out.WriteLine($"TILT E {youngs:G} ratio {ratio} strain {strain}: late tilt {r.LateTilt:F2} deg, late speed {r.LateSpeed:F4}, strain {r.Strain:F4} (closed form {r.Expected:F4}), energy growth {r.EnergyGrowth:E2} of the load's work");
+            Assert.That(r.LateTilt, Is.LessThan(strain < 0.07f ? 1f : 2f), "a 3 degree tilt decays");
             Assert.That(r.EnergyGrowth, Is.LessThan(0.02f), "the energy never rises above its start");
             Assert.That(r.Strain, Is.EqualTo(r.Expected).Within(0.06f * r.Expected));
         }
