@@ -31,14 +31,12 @@ namespace Fulcrum.Dynamics
         {
             readonly SolverContext _c;
             public GroupPass Pass;
-#if NET
             /// <summary>Warm-start scale of the step's contacts (<see cref="GroupPass.PrepareWide"/>).</summary>
-            public float WarmContacts;
+            public float WarmContacts { get; set; }
             /// <summary>Impulse scale from substep to step (<see cref="GroupPass.StoreImpulses"/>).</summary>
-            public float Scale;
+            public float Scale { get; set; }
             /// <summary>Set when a prepared group has restitution (only ever set to true, so any thread may write it).</summary>
-            public bool Restitution;
-#endif
+            public bool Restitution { get; set; }
 
             public GroupJob(SolverContext context) => _c = context;
 
@@ -47,34 +45,16 @@ namespace Fulcrum.Dynamics
                 SolverContext c = _c;
                 switch (Pass)
                 {
-#if NET
+                    // The wide passes live with the rest of the SIMD path (SolverContext.Wide.cs).
                     case GroupPass.PrepareWide:
-                    {
-                        // Each group's rejects go to its own window of the scratch list; the
-                        // caller gathers them colour by colour in group order afterwards.
-                        int width = ContactSolverWide.Width;
-                        bool restitution = false;
-                        for (int g = start; g < end; g++)
-                        {
-                            int n = g * width;
-                            restitution |= ContactSolverWide.Prepare(c._wide, c._wideImpact, g, g + 1, c._wideManifold, c._wideBodies,
-                                c._wideSlots, c._manifolds, c.Bodies, WarmContacts, c._groupRejects, ref n);
-                            c._groupRejectCount[g] = n - g * width;
-                        }
-                        if (restitution) Restitution = true;
+                        if (c.PrepareWideGroups(start, end, WarmContacts)) Restitution = true;
                         break;
-                    }
                     case GroupPass.Accumulate:
-                        for (int g = start; g < end; g++) ContactSolverWide.Accumulate(c._wide[g], ref c._wideImpact[g]);
+                        c.AccumulateWideGroups(start, end);
                         break;
                     case GroupPass.StoreImpulses:
-                    {
-                        int width = ContactSolverWide.Width;
-                        for (int g = start; g < end; g++)
-                            ContactSolverWide.Store(c._wide[g], c._wideImpact[g], c._wideSlots, c._wideManifold, g * width, c._manifolds, Scale);
+                        c.StoreWideGroups(start, end, Scale);
                         break;
-                    }
-#endif
                     case GroupPass.StoreBodies:
                         // Solver index k = start + 1 ...: index 0 is the fixed body.
                         c.StoreBodies(start + 1, end + 1);

@@ -241,7 +241,41 @@ namespace Fulcrum.Dynamics
                 }
             }
         }
+        // The wide groups' share of GroupJob (SolverContext.GroupJob.cs), one range of groups
+        // each. Each group's rejects go to its own window of the scratch list; the caller gathers
+        // them colour by colour in group order afterwards.
+        bool PrepareWideGroups(int start, int end, float warmContacts)
+        {
+            int width = ContactSolverWide.Width;
+            bool restitution = false;
+            for (int g = start; g < end; g++)
+            {
+                int n = g * width;
+                restitution |= ContactSolverWide.Prepare(_wide, _wideImpact, g, g + 1, _wideManifold, _wideBodies,
+                    _wideSlots, _manifolds, Bodies, warmContacts, _groupRejects, ref n);
+                _groupRejectCount[g] = n - g * width;
+            }
+            return restitution;
+        }
+
+        void AccumulateWideGroups(int start, int end)
+        {
+            for (int g = start; g < end; g++) ContactSolverWide.Accumulate(_wide[g], ref _wideImpact[g]);
+        }
+
+        void StoreWideGroups(int start, int end, float scale)
+        {
+            int width = ContactSolverWide.Width;
+            for (int g = start; g < end; g++)
+                ContactSolverWide.Store(_wide[g], _wideImpact[g], _wideSlots, _wideManifold, g * width, _manifolds, scale);
+        }
 #else
+        bool PrepareWideGroups(int start, int end, float warmContacts) => false;
+
+        void AccumulateWideGroups(int start, int end) { }
+
+        void StoreWideGroups(int start, int end, float scale) { }
+
         void ReserveWide(int manifolds) { }
 
         bool BeginWide(bool wide, bool keepRows) => false;
