@@ -11,7 +11,7 @@ namespace Fulcrum.SoftBodies
             typeof(Attachment), typeof(SoftPlasticity), typeof(SoftSolver),
         };
 
-        bool IStateStage.HasState => _slots.Count > 0;
+        bool IStateStage.HasState => _slots.SlotCount > 0;
 
         Type[] IStateStage.LayoutTypes => StateTypes;
 
@@ -19,15 +19,15 @@ namespace Fulcrum.SoftBodies
         // state, and the divergence record.
         void IStateStage.SaveState(StateWriter w)
         {
-            w.Write(_slots.Count);
-            for (int i = 0; i < _slots.Count; i++)
+            w.Write(_slots.SlotCount);
+            for (int i = 0; i < _slots.SlotCount; i++)
             {
-                w.Write(_generations[i]);
-                w.Write(_slots[i] != null);
+                w.Write(_slots.Generation[i]);
+                w.Write(_bodies[i] != null);
             }
-            w.Write(_active.Count);
-            foreach (SoftBody body in _active) w.Write(body.Slot);
-            foreach (SoftBody body in _active) body.WriteState(w);
+            w.Write(Count);
+            for (int k = 0; k < Count; k++) w.Write(_slots.Active[k]);
+            for (int k = 0; k < Count; k++) this[k].WriteState(w);
             w.Write(DivergenceCount);
             w.Write(LastDiverged.Index);
             w.Write(LastDiverged.Generation);
@@ -37,24 +37,26 @@ namespace Fulcrum.SoftBodies
         Action IStateStage.PrepareRestore(StateReader r)
         {
             int slots = r.Read<int>("soft body slot count");
-            if (slots != _slots.Count)
-                throw r.Error($"the state has {slots} soft body slots, this world {_slots.Count}: build the same soft bodies before restoring.");
+            if (slots != _slots.SlotCount)
+                throw r.Error($"the state has {slots} soft body slots, this world {_slots.SlotCount}: build the same soft bodies before restoring.");
             for (int i = 0; i < slots; i++)
             {
                 int generation = r.Read<int>("soft body generation");
                 bool live = r.Read<bool>("soft body liveness");
-                if (generation != _generations[i] || live != (_slots[i] != null))
-                    throw r.Error($"soft body slot {i} is {(live ? "live" : "free")} at generation {generation} in the state and {(_slots[i] != null ? "live" : "free")} at {_generations[i]} here: build the same soft bodies before restoring.");
+                if (generation != _slots.Generation[i] || live != (_bodies[i] != null))
+                    throw r.Error($"soft body slot {i} is {(live ? "live" : "free")} at generation {generation} in the state and {(_bodies[i] != null ? "live" : "free")} at {_slots.Generation[i]} here: build the same soft bodies before restoring.");
             }
             int count = r.Count("live soft body count", slots);
-            if (count != _active.Count) throw r.Error($"the state has {count} live soft bodies, this world {_active.Count}.");
+            if (count != Count) throw r.Error($"the state has {count} live soft bodies, this world {Count}.");
             var order = new SoftBody[count];
+            var orderSlots = new int[count];
             for (int k = 0; k < count; k++)
             {
                 int slot = r.Read<int>("soft body slot");
-                if ((uint)slot >= (uint)slots || !(_slots[slot] is SoftBody body) || Array.IndexOf(order, body) >= 0)
+                if ((uint)slot >= (uint)slots || !(_bodies[slot] is SoftBody body) || Array.IndexOf(order, body) >= 0)
                     throw r.Error($"live soft body {k} names slot {slot}, which is not live here or is named twice.");
                 order[k] = body;
+                orderSlots[k] = slot;
             }
             var commits = new Action[count];
             for (int k = 0; k < count; k++) commits[k] = order[k].PrepareRestore(r);
@@ -63,8 +65,7 @@ namespace Fulcrum.SoftBodies
             long lastStep = r.Read<long>("soft divergence step");
             return () =>
             {
-                _active.Clear();
-                _active.AddRange(order);
+                _slots.SetActiveOrder(orderSlots);
                 foreach (Action commit in commits) commit();
                 DivergenceCount = divergences;
                 LastDiverged = last;

@@ -1,5 +1,4 @@
 using System;
-using System.Collections.Generic;
 
 namespace Fulcrum.SoftBodies
 {
@@ -15,10 +14,10 @@ namespace Fulcrum.SoftBodies
     public sealed partial class SoftBodySystem : ISoftBodyStage
     {
         readonly World _world;
-        readonly List<SoftBody?> _slots = new List<SoftBody?>();
-        readonly List<int> _generations = new List<int>();
-        readonly Stack<int> _free = new Stack<int>();
-        readonly List<SoftBody> _active = new List<SoftBody>();
+        // Slots, generations and the stepping order (live slots, swap-removed) come from Core's
+        // allocator, as for rigid bodies; the bodies themselves are kept by slot here.
+        readonly SlotAllocator _slots = new SlotAllocator();
+        SoftBody?[] _bodies = Array.Empty<SoftBody?>();
         readonly RigidCoupling _coupling = new RigidCoupling();
         readonly SoftSoftContacts _softContacts = new SoftSoftContacts();
 
@@ -28,86 +27,68 @@ namespace Fulcrum.SoftBodies
         public static SoftBodySystem? Of(World world) => world.SoftBodyStage as SoftBodySystem;
 
         /// <summary>Live soft bodies.</summary>
-        public int Count => _active.Count;
+        public int Count => _slots.ActiveCount;
 
         /// <inheritdoc/>
-        public bool HasWork => _active.Count > 0;
+        public bool HasWork => _slots.ActiveCount > 0;
 
         /// <summary>The live body at position <paramref name="index"/> (0 .. Count - 1, creation order with removals swapped in).</summary>
-        public SoftBody this[int index] => _active[index];
+        public SoftBody this[int index] =>
+            (uint)index < (uint)_slots.ActiveCount ? _bodies[_slots.Active[index]]! : throw new ArgumentOutOfRangeException(nameof(index), $"{index} is not below Count ({Count}).");
 
         internal SoftBodyHandle Add(in SoftBodyDef def)
         {
-            int slot = _free.Count > 0 ? _free.Peek() : _slots.Count;
-            int generation = (slot < _generations.Count ? _generations[slot] : 0) + 1;
-            if (generation <= 0) generation = 1;
+            int slot = _slots.PeekNext(out int generation);
             // Build first: a bad def throws before the system changes.
             var body = new SoftBody(_world, slot, generation, def);
-            if (_free.Count > 0) _free.Pop();
-            if (slot == _slots.Count)
-            {
-                _slots.Add(body);
-                _generations.Add(generation);
-            }
-            else
-            {
-                _slots[slot] = body;
-                _generations[slot] = generation;
-            }
-            _active.Add(body);
+            _slots.Allocate(out bool grew);
+            if (grew) Array.Resize(ref _bodies, _slots.Capacity);
+            _bodies[slot] = body;
             return body.Handle;
         }
 
         internal void Remove(SoftBodyHandle handle)
         {
-            SoftBody body = Get(handle);
-            body.Destroyed = true;
-            _slots[handle.Index] = null;
-            _free.Push(handle.Index);
-            int at = _active.IndexOf(body);
-            _active[at] = _active[_active.Count - 1];
-            _active.RemoveAt(_active.Count - 1);
+            int slot = Slot(handle);
+            _bodies[slot]!.Destroyed = true;
+            _bodies[slot] = null;
+            _slots.Release(slot);
         }
 
-        internal bool IsLive(SoftBodyHandle handle) =>
-            handle.WorldId == _world.Id && handle.Generation != 0 && (uint)handle.Index < (uint)_slots.Count && _slots[handle.Index] is SoftBody b && b.Generation == handle.Generation;
+        internal bool IsLive(SoftBodyHandle handle) => handle.WorldId == _world.Id && _slots.IsLive(handle.Index, handle.Generation);
 
-        internal SoftBody Get(SoftBodyHandle handle)
-        {
-            if (!handle.IsNone && handle.WorldId != _world.Id) throw _world.ForeignHandle(handle.ToString(), handle.WorldId);
-            if (!IsLive(handle))
-                throw new StaleHandleException(handle.IsNone
-                    ? "The soft body handle is None."
-                    : $"{handle} does not name a live soft body: it was destroyed, or was never issued by this world.");
-            return _slots[handle.Index]!;
-        }
+        internal SoftBody Get(SoftBodyHandle handle) => _bodies[Slot(handle)]!;
+
+        int Slot(SoftBodyHandle handle) => _world.LiveSlot(handle.Id, _slots, nameof(SoftBodyHandle), "soft body", "destroyed");
 
         /// <inheritdoc/>
         public void Step(World world, float dt)
         {
-            if (_active.Count == 0) return;
+            int count = _slots.ActiveCount;
+            if (count == 0) return;
             IParallelScheduler? pool = world.ParallelScheduler();
 
             _coupling.Begin(world, dt);
-            for (int k = 0; k < _active.Count; k++) _active[k].BeginStep(dt, _coupling);
+            for (int k = 0; k < count; k++) this[k].BeginStep(dt, _coupling);
             // After BeginStep: a Newton body's substeps depend on whether it touches anything.
             int substeps = 1;
-            for (int k = 0; k < _active.Count; k++) substeps = Math.Max(substeps, _active[k].SubstepsFor(dt));
+            for (int k = 0; k < count; k++) substeps = Math.Max(substeps, this[k].SubstepsFor(dt));
             float h = dt / substeps;
             _coupling.SetSubsteps(substeps);
-            _softContacts.FindPairs(_active, world.Gravity.Length(), dt);
+            _softContacts.FindPairs(this, world.Gravity.Length(), dt);
             for (int s = 0; s < substeps; s++)
             {
                 _coupling.BeginSubstep((s + 1f) / substeps, h);
-                for (int k = 0; k < _active.Count; k++) _active[k].Substep(h, _coupling, pool);
+                for (int k = 0; k < count; k++) this[k].Substep(h, _coupling, pool);
                 if (_softContacts.PairCount > 0) _softContacts.Solve(h);
             }
-            for (int k = 0; k < _active.Count; k++)
+            for (int k = 0; k < count; k++)
             {
-                _active[k].EndStep(dt);
-                if (_active[k].KeepFinite()) continue;
+                SoftBody body = this[k];
+                body.EndStep(dt);
+                if (body.KeepFinite()) continue;
                 DivergenceCount++;
-                LastDiverged = _active[k].Handle;
+                LastDiverged = body.Handle;
                 LastDivergedStep = world.StepIndex;
                 Diverged?.Invoke(LastDiverged, LastDivergedStep);
             }

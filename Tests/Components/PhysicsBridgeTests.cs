@@ -196,6 +196,31 @@ namespace Fulcrum.Tests.Components
         }
 
         [Test]
+        public void An_unregistered_proxy_slot_is_reused_only_after_a_step_and_the_old_handle_stays_stale()
+        {
+            using PhysicsBridge bridge = NewBridge();
+            ProxyHandle a = bridge.Register(new Thing("a", Vector3.Zero), BodyDef.Default, Ball);
+            bridge.Unregister(a);
+            ProxyHandle b = bridge.Register(new Thing("b", new Vector3(5, 0, 0)), BodyDef.Default, Ball);
+            Assert.That(b.Index, Is.Not.EqualTo(a.Index), "the slot waits for its end events until the next step");
+            bridge.Step(0.25f);
+
+            var thing = new Thing("c", new Vector3(-5, 0, 0));
+            ProxyHandle c = bridge.Register(thing, BodyDef.Default, Ball);
+            Assert.That(c.Index, Is.EqualTo(a.Index), "released after the step, reused first");
+            Assert.That(c.Generation, Is.GreaterThan(a.Generation));
+            Assert.That(c, Is.Not.EqualTo(a));
+            Assert.That(bridge.IsRegistered(a), Is.False);
+            Assert.That(() => bridge.GetEntity(a), Throws.TypeOf<StaleHandleException>().With.Message.Contains("it was unregistered"));
+            Assert.That(() => bridge.AddForce(a, Vector3.One), Throws.TypeOf<StaleHandleException>());
+            Assert.That(bridge.GetEntity(c), Is.SameAs(thing));
+            Assert.That(bridge.World.GetBody(bridge.GetBody(c)).Position, Is.EqualTo(thing.Position));
+            Assert.That(bridge.Count, Is.EqualTo(2));
+            Assert.That(() => bridge.GetEntity(new ProxyHandle(c.Index, c.Generation)), Throws.TypeOf<StaleHandleException>().With.Message.Contains("World 0"),
+                "a handle built with no world id");
+        }
+
+        [Test]
         public void Contact_events_from_the_world_carry_their_manifold_points()
         {
             WorldSettings ws = WorldSettings.Default;

@@ -41,6 +41,66 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.Throws<StaleHandleException>(() => world.GetSoftBody(SoftBodyHandle.None));
         }
 
+        [Test]
+        public void A_rejected_def_after_a_removal_leaves_the_freed_slot_to_the_next_body()
+        {
+            var world = new World();
+            SoftBodyHandle a = world.CreateSoftBody(JellyCube());
+            SoftBodyHandle b = world.CreateSoftBody(JellyCube());
+            world.DestroySoftBody(a);
+            BodyHandle gone = world.CreateBody(BodyDef.Dynamic(Vector3.Zero));
+            world.DestroyBody(gone);
+            SoftBodyDef bad = JellyCube();
+            bad.Pins = new[] { SoftPin.ToBody(new Vector3(-1), new Vector3(1), gone) };
+            Assert.Throws<StaleHandleException>(() => world.CreateSoftBody(bad));
+
+            SoftBodySystem system = SoftBodySystem.Of(world)!;
+            Assert.That(system.Count, Is.EqualTo(1), "the rejected body took no slot");
+            SoftBodyHandle c = world.CreateSoftBody(JellyCube());
+            Assert.That(c.Index, Is.EqualTo(a.Index), "the freed slot is still the next one");
+            Assert.That(c.Generation, Is.GreaterThan(a.Generation));
+            Assert.That(world.IsValid(a), Is.False);
+            Assert.That(() => world.GetSoftBody(a), Throws.TypeOf<StaleHandleException>().With.Message.Contains("does not name a live soft body"));
+            Assert.That(system[0].Handle, Is.EqualTo(b), "the removal swapped the last body into the first place");
+            Assert.That(system[1].Handle, Is.EqualTo(c));
+            Assert.That(() => system[2], Throws.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(() => system[-1], Throws.TypeOf<ArgumentOutOfRangeException>());
+        }
+
+        // Two worlds whose soft-body slots have the same generations and liveness but step their
+        // bodies in other orders: a restore takes the saved order, and both runs go on alike.
+        [Test]
+        public void A_restore_takes_the_saved_stepping_order_of_reused_slots()
+        {
+            static SoftBodyDef Cube(float x) => SoftBodyScenes.Cube(0.4f, 2, MaterialPresets.Jelly, new Vector3(x, 1, 0));
+            World Build(bool firstFreedFirst)
+            {
+                var world = new World();
+                BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Zero));
+                world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(Vector3.UnitY, 0)));
+                SoftBodyHandle s0 = world.CreateSoftBody(Cube(0)), s1 = world.CreateSoftBody(Cube(0.3f));
+                world.DestroySoftBody(firstFreedFirst ? s0 : s1);
+                world.DestroySoftBody(firstFreedFirst ? s1 : s0);
+                world.CreateSoftBody(Cube(0));
+                world.CreateSoftBody(Cube(0.3f));
+                return world;
+            }
+            World a = Build(true), b = Build(false);
+            SoftBodySystem sa = SoftBodySystem.Of(a)!, sb = SoftBodySystem.Of(b)!;
+            Assert.That(sa[0].Handle.Index, Is.EqualTo(1), "slot 1 was freed last, so taken first");
+            Assert.That(sb[0].Handle.Index, Is.EqualTo(0));
+            SoftBodyScenes.Run(a, 10);
+
+            b.RestoreState(new System.IO.MemoryStream(State.StateRoundTripTests.Save(a)));
+            Assert.That(sb[0].Handle, Is.EqualTo(sa[0].Handle));
+            Assert.That(sb[1].Handle, Is.EqualTo(sa[1].Handle));
+            SoftBodyScenes.Run(a, 10);
+            SoftBodyScenes.Run(b, 10);
+            for (int k = 0; k < 2; k++)
+                Assert.That(sb[k].Positions.ToArray(), Is.EqualTo(sa[k].Positions.ToArray()), $"body {k}");
+            Assert.That(State.StateRoundTripTests.Save(b), Is.EqualTo(State.StateRoundTripTests.Save(a)));
+        }
+
         static void AssertRejected(SoftBodyDef def, string field, string? message = null)
         {
             var world = new World();

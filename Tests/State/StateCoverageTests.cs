@@ -44,7 +44,7 @@ namespace Fulcrum.Tests.State
             "SlotAllocator._free",
             // Soft bodies: the per-step contact and pair searches (the contacts' held flags for the
             // Newton solver are saved by SoftBody.WriteState and checked by the round-trip tests), job objects and scratch.
-            "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem._free", "SoftBodySystem.Diverged",
+            "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem.Diverged",
             "SoftBody._tetJob", "SoftBody._membraneJob", "SoftBody._bendingJob", "SoftBody.Contacts", "SoftBody.SelfContacts", "SoftBody._scratch",
             // The tet kernels' (W, FreeW, M) per vertex: packed from the saved arrays at the start of every step.
             "TetStream.Masses",

@@ -175,12 +175,12 @@ namespace Fulcrum.Components
         {
             lock (_sync)
             {
-                if (_sharedInput.Length < _gSlotCount)
+                if (_sharedInput.Length < _gSlots.SlotCount)
                 {
                     Array.Resize(ref _sharedInput, _gInput.Length);
                     Array.Resize(ref _sharedInputSet, _gInput.Length);
                 }
-                for (int slot = 0; slot < _gSlotCount; slot++)
+                for (int slot = 0; slot < _gSlots.SlotCount; slot++)
                 {
                     if (_gState[slot] != Live || _gMode[slot] != DriveMode.Game || _gStatic[slot]) continue;
                     _sharedInput[slot] = _gInput[slot];
@@ -240,12 +240,12 @@ namespace Fulcrum.Components
                 double period = Stopwatch.Frequency / (double)_settings.ThreadRateHz;
                 alpha = (float)Math.Min(1.0, Math.Max(0.0, (Stopwatch.GetTimestamp() - published) / period));
             }
-            int count = Math.Min(_gSlotCount, _gCur.Length);
+            int count = Math.Min(_gSlots.SlotCount, _gCur.Length);
             for (int slot = 0; slot < count; slot++)
             {
-                if (_gState[slot] != Live || _gMode[slot] != DriveMode.Physics || _gCurGen[slot] != _gGeneration[slot]) continue;
+                if (_gState[slot] != Live || _gMode[slot] != DriveMode.Physics || _gCurGen[slot] != _gSlots.Generation[slot]) continue;
                 Pose cur = _gCur[slot];
-                if (_gPrevGen[slot] == _gGeneration[slot])
+                if (_gPrevGen[slot] == _gSlots.Generation[slot])
                 {
                     Pose prev = _gPrev[slot];
                     cur = new Pose(Vector3.Lerp(prev.Position, cur.Position, alpha), Quaternion.Slerp(prev.Rotation, cur.Rotation, alpha));

@@ -151,10 +151,10 @@ namespace Fulcrum.Components
         // each body is now (game thread, no physics thread).
         void TakeInputs()
         {
-            for (int slot = 0; slot < _gSlotCount; slot++)
+            for (int slot = 0; slot < _gSlots.SlotCount; slot++)
             {
                 if (_gState[slot] != Live || _gMode[slot] != DriveMode.Game || _gStatic[slot]) continue;
-                if (slot >= _wSlotCount || _wGeneration[slot] != _gGeneration[slot] || _wBody[slot].IsNone) continue;
+                if (slot >= _wSlotCount || _wGeneration[slot] != _gSlots.Generation[slot] || _wBody[slot].IsNone) continue;
                 _wFrom[slot] = _world.GetBody(_wBody[slot]).Pose;
                 _wTo[slot] = _gInput[slot];
                 _wHasTarget[slot] = true;
@@ -293,7 +293,7 @@ namespace Fulcrum.Components
                     int slot = _released[k];
                     _gState[slot] = Free;
                     _gEntity[slot] = null;
-                    _gFree[_gFreeCount++] = slot;
+                    _gSlots.Release(slot);
                 }
                 _releasedCount = 0;
             }

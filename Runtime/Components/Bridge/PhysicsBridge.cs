@@ -27,16 +27,14 @@ namespace Fulcrum.Components
         readonly object _sync = new object();
         readonly bool _threaded;
 
-        // Game side: owned by the game thread.
-        IPhysicsEntity?[] _gEntity = new IPhysicsEntity?[16];
-        int[] _gGeneration = new int[16];
-        byte[] _gState = new byte[16];
-        DriveMode[] _gMode = new DriveMode[16];
-        bool[] _gStatic = new bool[16];
-        Pose[] _gInput = new Pose[16];
-        int[] _gFree = new int[16];
-        int _gFreeCount;
-        int _gSlotCount;
+        // Game side: owned by the game thread. A slot stays taken in _gSlots (its generation
+        // unchanged) while Removing, until the world side has delivered its last events.
+        readonly SlotAllocator _gSlots = new SlotAllocator();
+        IPhysicsEntity?[] _gEntity = Array.Empty<IPhysicsEntity?>();
+        byte[] _gState = Array.Empty<byte>();
+        DriveMode[] _gMode = Array.Empty<DriveMode>();
+        bool[] _gStatic = Array.Empty<bool>();
+        Pose[] _gInput = Array.Empty<Pose>();
         int _liveCount;
         BridgeCommandQueue _commands = new BridgeCommandQueue();
         bool _dispatching;
@@ -142,9 +140,9 @@ namespace Fulcrum.Components
             _gStatic[slot] = def.Type == BodyType.Static;
             _gInput[slot] = new Pose(position, rotation);
             _liveCount++;
-            var cmd = new BridgeCommand { Kind = BridgeCommandKind.Create, Slot = slot, Generation = _gGeneration[slot], Entity = entity, Body = def, Mode = mode };
+            var cmd = new BridgeCommand { Kind = BridgeCommandKind.Create, Slot = slot, Generation = _gSlots.Generation[slot], Entity = entity, Body = def, Mode = mode };
             Enqueue(cmd, shapes);
-            return new ProxyHandle(slot, _gGeneration[slot], _world.Id);
+            return new ProxyHandle(slot, _gSlots.Generation[slot], _world.Id);
         }
 
         /// <summary>
@@ -162,7 +160,7 @@ namespace Fulcrum.Components
 
         /// <summary>True while <paramref name="proxy"/> names a registered entity.</summary>
         public bool IsRegistered(ProxyHandle proxy) =>
-            !proxy.IsNone && proxy.WorldId == _world.Id && (uint)proxy.Index < (uint)_gSlotCount && _gGeneration[proxy.Index] == proxy.Generation && _gState[proxy.Index] == Live;
+            proxy.WorldId == _world.Id && _gSlots.IsLive(proxy.Index, proxy.Generation) && _gState[proxy.Index] == Live;
 
         /// <summary>The entity of a registered proxy.</summary>
         public IPhysicsEntity GetEntity(ProxyHandle proxy) => _gEntity[LiveSlot(proxy, nameof(GetEntity))]!;
@@ -257,7 +255,7 @@ namespace Fulcrum.Components
         {
             ThrowIfDisposed();
             ThrowIfDispatching(nameof(SyncFromGame));
-            for (int slot = 0; slot < _gSlotCount; slot++)
+            for (int slot = 0; slot < _gSlots.SlotCount; slot++)
             {
                 if (_gState[slot] != Live || _gMode[slot] != DriveMode.Game || _gStatic[slot]) continue;
                 IPhysicsEntity e = _gEntity[slot]!;
@@ -306,10 +304,10 @@ namespace Fulcrum.Components
             ThrowIfDispatching(nameof(SyncToGame));
             if (_threaded) { WriteThreadPoses(); return; }
             float alpha = _settings.Interpolate ? _stepper.InterpolationFactor : 1f;
-            for (int slot = 0; slot < _gSlotCount; slot++)
+            for (int slot = 0; slot < _gSlots.SlotCount; slot++)
             {
                 if (_gState[slot] != Live || _gMode[slot] != DriveMode.Physics) continue;
-                if (slot >= _wBody.Length || _wGeneration[slot] != _gGeneration[slot] || _wBody[slot].IsNone) continue;
+                if (slot >= _wBody.Length || _wGeneration[slot] != _gSlots.Generation[slot] || _wBody[slot].IsNone) continue;
                 Pose p = _world.GetInterpolatedPose(_wBody[slot], alpha);
                 _gEntity[slot]!.SetPose(p.Position, p.Rotation);
             }
@@ -356,25 +354,16 @@ namespace Fulcrum.Components
         int AllocateSlot()
         {
             ReclaimReleasedSlots();
-            int slot;
-            if (_gFreeCount > 0) slot = _gFree[--_gFreeCount];
-            else
+            int slot = _gSlots.Allocate(out bool grew);
+            if (grew)
             {
-                if (_gSlotCount == _gEntity.Length)
-                {
-                    int n = _gEntity.Length * 2;
-                    Array.Resize(ref _gEntity, n);
-                    Array.Resize(ref _gGeneration, n);
-                    Array.Resize(ref _gState, n);
-                    Array.Resize(ref _gMode, n);
-                    Array.Resize(ref _gStatic, n);
-                    Array.Resize(ref _gInput, n);
-                    Array.Resize(ref _gFree, n);
-                }
-                slot = _gSlotCount++;
+                int n = _gSlots.Capacity;
+                Array.Resize(ref _gEntity, n);
+                Array.Resize(ref _gState, n);
+                Array.Resize(ref _gMode, n);
+                Array.Resize(ref _gStatic, n);
+                Array.Resize(ref _gInput, n);
             }
-            _gGeneration[slot]++;
-            if (_gGeneration[slot] <= 0) _gGeneration[slot] = 1;
             return slot;
         }
 

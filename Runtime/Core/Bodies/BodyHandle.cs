@@ -12,54 +12,52 @@ namespace Fulcrum
     /// </summary>
     public readonly struct BodyHandle : IEquatable<BodyHandle>
     {
+        // Slot, generation, world id and their equality, hash and text, shared by every handle type.
+        internal readonly HandleId Id;
+
+        /// <summary>Builds a handle of the world with id <paramref name="worldId"/>. Handles come from the world; user code rarely builds one.</summary>
+        public BodyHandle(int index, int generation, int worldId) => Id = new HandleId(index, generation, worldId);
+
+        /// <summary>Builds a handle with no world id (0), which every world refuses; kept for source compatibility.</summary>
+        public BodyHandle(int index, int generation) : this(index, generation, 0) { }
+
         /// <summary>The slot in the world's storage.</summary>
-        public readonly int Index;
+        public int Index => Id.Index;
         /// <summary>The generation of the slot when the handle was issued; 0 means none.</summary>
-        public readonly int Generation;
+        public int Generation => Id.Generation;
         /// <summary>
         /// <see cref="World.Id"/> of the world that issued the handle (ids start at 1 and are
         /// unique in the process). A world refuses a handle with another id. Not part of the
         /// simulation state: a restored world has its own id.
         /// </summary>
-        public readonly int WorldId;
-
-        /// <summary>Builds a handle of the world with id <paramref name="worldId"/>. Handles come from the world; user code rarely builds one.</summary>
-        public BodyHandle(int index, int generation, int worldId)
-        {
-            Index = index;
-            Generation = generation;
-            WorldId = worldId;
-        }
-
-        /// <summary>Builds a handle with no world id (0), which every world refuses; kept for source compatibility.</summary>
-        public BodyHandle(int index, int generation) : this(index, generation, 0) { }
+        public int WorldId => Id.WorldId;
 
         /// <summary>The "none" handle.</summary>
         public static BodyHandle None => default;
 
         /// <summary>True for <see cref="None"/>.</summary>
-        public bool IsNone => Generation == 0;
+        public bool IsNone => Id.IsNone;
 
         /// <summary>
         /// Same slot and generation. The world id is left out on purpose: the handles of two
         /// worlds built the same way compare equal, which is how determinism checks compare two
         /// runs; which world accepts a handle is still decided by <see cref="WorldId"/>.
         /// </summary>
-        public bool Equals(BodyHandle other) => Index == other.Index && Generation == other.Generation;
+        public bool Equals(BodyHandle other) => Id.Equals(other.Id);
 
         /// <inheritdoc/>
-        public override bool Equals(object? obj) => obj is BodyHandle h && Equals(h);
+        public override bool Equals(object? obj) => obj is BodyHandle h && Id.Equals(h.Id);
 
         /// <inheritdoc/>
-        public override int GetHashCode() => (Index * 397) ^ Generation;
+        public override int GetHashCode() => Id.GetHashCode();
 
         /// <summary>Same slot and generation (see <see cref="Equals(BodyHandle)"/>).</summary>
-        public static bool operator ==(BodyHandle a, BodyHandle b) => a.Equals(b);
+        public static bool operator ==(BodyHandle a, BodyHandle b) => a.Id.Equals(b.Id);
 
         /// <summary>Different slot or generation.</summary>
-        public static bool operator !=(BodyHandle a, BodyHandle b) => !a.Equals(b);
+        public static bool operator !=(BodyHandle a, BodyHandle b) => !a.Id.Equals(b.Id);
 
         /// <inheritdoc/>
-        public override string ToString() => IsNone ? "BodyHandle(none)" : $"BodyHandle({Index}:{Generation} of world {WorldId})";
+        public override string ToString() => Id.Format(nameof(BodyHandle));
     }
 }

@@ -4,9 +4,11 @@ namespace Fulcrum
 {
     /// <summary>
     /// Slots with generations, a free list and a dense list of live slots: the bookkeeping
-    /// behind every handle type (bodies, shapes, joints). A slot's generation changes when it
-    /// is taken and when it is freed, so a handle from before either no longer matches; live
-    /// slots are also packed in <see cref="Active"/> so loops walk only real objects.
+    /// behind every handle type (bodies, shapes, joints, soft bodies, bridge proxies). A slot's
+    /// generation changes when it is taken and when it is freed, so a handle from before either
+    /// no longer matches; live slots are also packed in <see cref="Active"/> so loops walk only
+    /// real objects. Freed slots are reused last freed first, and a removal moves the last live
+    /// slot into its place: both orders are part of every run's determinism.
     /// The owner keeps its own per-slot arrays at <see cref="Capacity"/> (see <see cref="Allocate"/>).
     /// </summary>
     internal sealed class SlotAllocator
@@ -55,6 +57,32 @@ namespace Fulcrum
             return slot;
         }
 
+        /// <summary>
+        /// The slot the next <see cref="Allocate"/> takes and the generation it gives it, without
+        /// taking it: for owners that build the object first, so that a bad definition throws
+        /// before anything changes.
+        /// </summary>
+        public int PeekNext(out int generation)
+        {
+            int slot = _freeCount > 0 ? _free[_freeCount - 1] : SlotCount;
+            generation = After(slot < Generation.Length ? Generation[slot] : 0);
+            return slot;
+        }
+
+        /// <summary>
+        /// Puts the live slots in the order <paramref name="slots"/> lists them (a restore: the
+        /// owner has checked that they are exactly the live slots, each once).
+        /// </summary>
+        public void SetActiveOrder(ReadOnlySpan<int> slots)
+        {
+            if (slots.Length != ActiveCount) throw new ArgumentException($"{slots.Length} slots given for {ActiveCount} live ones.", nameof(slots));
+            for (int k = 0; k < slots.Length; k++)
+            {
+                Active[k] = slots[k];
+                ActiveIndex[slots[k]] = k;
+            }
+        }
+
         /// <summary>Frees a live slot; handles to it go stale.</summary>
         public void Release(int slot)
         {
@@ -68,12 +96,10 @@ namespace Fulcrum
             _free[_freeCount++] = slot;
         }
 
+        void NextGeneration(int slot) => Generation[slot] = After(Generation[slot]);
+
         // Generations skip 0 ("none") when they wrap after 2^31 reuses.
-        void NextGeneration(int slot)
-        {
-            Generation[slot]++;
-            if (Generation[slot] <= 0) Generation[slot] = 1;
-        }
+        static int After(int generation) => generation + 1 <= 0 ? 1 : generation + 1;
 
         /// <summary>Writes the slots, generations, live list and free list (see <see cref="World.SaveState"/>).</summary>
         public void Save(StateWriter w)

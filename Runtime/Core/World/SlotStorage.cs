@@ -9,6 +9,9 @@ namespace Fulcrum
     {
         private protected SlotAllocator _slots = new SlotAllocator();
 
+        /// <summary>The allocator itself, for checking handles (<see cref="World.LiveSlot"/>).</summary>
+        public SlotAllocator Slots => _slots;
+
         /// <summary>Generation of each slot (see <see cref="SlotAllocator"/>).</summary>
         public int[] Generation => _slots.Generation;
         /// <summary>Position of each slot in <see cref="Active"/>, -1 when free.</summary>

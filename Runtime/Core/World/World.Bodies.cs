@@ -96,15 +96,7 @@ namespace Fulcrum
         }
 
         /// <summary>The slot of a live body, or <see cref="StaleHandleException"/>.</summary>
-        internal int Slot(BodyHandle body)
-        {
-            if (!body.IsNone && body.WorldId != Id) throw ForeignHandle(body.ToString(), body.WorldId);
-            if (!Bodies.IsLive(body))
-                throw new StaleHandleException(body.IsNone
-                    ? "The body handle is None."
-                    : $"{body} does not name a live body: it was destroyed, or was never issued by this world.");
-            return body.Index;
-        }
+        internal int Slot(BodyHandle body) => LiveSlot(body.Id, Bodies.Slots, nameof(BodyHandle), "body", "destroyed");
 
         /// <summary>
         /// Sets mass, centre and inertia directly, overriding the shapes' densities until

@@ -239,15 +239,7 @@ namespace Fulcrum
         /// <summary>True when the handle names a live joint of this world.</summary>
         public bool IsValid(JointHandle joint) => joint.WorldId == Id && Joints.IsLive(joint);
 
-        internal int JointSlot(JointHandle joint)
-        {
-            if (!joint.IsNone && joint.WorldId != Id) throw ForeignHandle(joint.ToString(), joint.WorldId);
-            if (!Joints.IsLive(joint))
-                throw new StaleHandleException(joint.IsNone
-                    ? "The joint handle is None."
-                    : $"{joint} does not name a live joint: it was destroyed, or was never issued by this world.");
-            return joint.Index;
-        }
+        internal int JointSlot(JointHandle joint) => LiveSlot(joint.Id, Joints.Slots, nameof(JointHandle), "joint", "destroyed");
 
         /// <summary>The kind of a joint.</summary>
         public JointKind GetJointKind(JointHandle joint) => Joints.Data[JointSlot(joint)].Kind;

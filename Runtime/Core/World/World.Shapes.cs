@@ -108,15 +108,7 @@ namespace Fulcrum
             return n;
         }
 
-        internal int ShapeSlot(ShapeHandle shape)
-        {
-            if (!shape.IsNone && shape.WorldId != Id) throw ForeignHandle(shape.ToString(), shape.WorldId);
-            if (!Shapes.IsLive(shape))
-                throw new StaleHandleException(shape.IsNone
-                    ? "The shape handle is None."
-                    : $"{shape} does not name a live shape: it was removed, or was never issued by this world.");
-            return shape.Index;
-        }
+        internal int ShapeSlot(ShapeHandle shape) => LiveSlot(shape.Id, Shapes.Slots, nameof(ShapeHandle), "shape", "removed");
 
         /// <summary>The world pose of a shape: its body's pose times its local pose.</summary>
         internal Pose ShapeWorldPose(int shape) => Shapes.WorldPose(shape, Bodies);

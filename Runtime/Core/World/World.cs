@@ -24,11 +24,25 @@ namespace Fulcrum
         /// </summary>
         public int Id { get; } = System.Threading.Interlocked.Increment(ref s_lastId);
 
-        // The one-line error for a handle issued by another world (or built with no world id).
-        internal StaleHandleException ForeignHandle(string handle, int worldId) =>
-            new StaleHandleException(worldId == 0
-                ? $"{handle} carries no world id: use handles returned by World {Id}'s own calls."
-                : $"{handle} belongs to World {worldId}, not to this World {Id}: handles cannot cross worlds.");
+        /// <summary>
+        /// The slot that <paramref name="handle"/> (a <paramref name="type"/> naming a
+        /// <paramref name="noun"/>) holds in <paramref name="slots"/>, or the one-line
+        /// <see cref="StaleHandleException"/> that every call taking a handle throws: for a handle
+        /// of another world (or built with no world id), for none, and for a slot that was
+        /// <paramref name="ended"/>. The text is built only when it throws (no allocation).
+        /// </summary>
+        internal int LiveSlot(in HandleId handle, SlotAllocator slots, string type, string noun, string ended)
+        {
+            if (!handle.IsNone && handle.WorldId != Id)
+                throw new StaleHandleException(handle.WorldId == 0
+                    ? $"{handle.Format(type)} carries no world id: use handles returned by World {Id}'s own calls."
+                    : $"{handle.Format(type)} belongs to World {handle.WorldId}, not to this World {Id}: handles cannot cross worlds.");
+            if (!slots.IsLive(handle.Index, handle.Generation))
+                throw new StaleHandleException(handle.IsNone
+                    ? $"The {noun} handle is None."
+                    : $"{handle.Format(type)} does not name a live {noun}: it was {ended}, or was never issued by this world.");
+            return handle.Index;
+        }
         bool _inStep;
         long _stepIndex;
         StepProfile _profile;

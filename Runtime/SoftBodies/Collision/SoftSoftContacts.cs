@@ -48,7 +48,7 @@ namespace Fulcrum.SoftBodies
         public int PairCount => _count;
 
         /// <summary>Finds the vertex-triangle pairs of different bodies that may touch during a step of <paramref name="dt"/>.</summary>
-        public void FindPairs(List<SoftBody> bodies, float gravity, float dt)
+        public void FindPairs(SoftBodySystem bodies, float gravity, float dt)
         {
             _count = 0;
             if (bodies.Count < 2) return;
