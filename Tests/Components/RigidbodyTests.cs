@@ -108,7 +108,7 @@ namespace Fulcrum.Tests.Components
         }
 
         [Test]
-        public void FreezeRotationZ_removes_the_z_part_of_each_step_rotation()
+        public void FreezeRotationZ_keeps_the_body_from_turning_about_z()
         {
             PhysicsScene scene = ZeroGravityScene();
             Rigidbody rb = Ball(scene);

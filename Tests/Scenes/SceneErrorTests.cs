@@ -161,7 +161,7 @@ namespace Fulcrum.Tests.Scenes
 }";
             Assert.That(Errors(text).Select(e => e.Path + ": " + e.Message).ToList(), Is.EqualTo(new[]
             {
-                "$.bodies[0].spin: unknown field (expected one of: name, type, shape, mass, density, material, position, rotation, velocity, angularVelocity, ccd)",
+                "$.bodies[0].spin: unknown field (expected one of: name, type, shape, mass, density, material, position, rotation, velocity, angularVelocity, ccd, lockAxes)",
                 "$.bodies[1].shape.halfHeight: missing required field",
                 "$.timestep: must be > 0, got 0",
                 "$.bodies[0].shape.halfExtents: must be > 0 on every axis, got [1, 0, 1]",

@@ -29,7 +29,7 @@ namespace Fulcrum.Components
 
         /// <summary>
         /// Whether physics may turn the body: true sets all three rotation bits of
-        /// <see cref="constraints"/> (exact: the inverse inertia is zeroed), false clears them
+        /// <see cref="constraints"/> (infinite inertia in the solver), false clears them
         /// (the position bits are kept), as Unity's freezeRotation does.
         /// </summary>
         public bool freezeRotation

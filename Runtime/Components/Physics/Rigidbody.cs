@@ -30,10 +30,8 @@ namespace Fulcrum.Components
         Vector3 _linearVelocity, _angularVelocity;
         internal readonly List<Collider> Colliders = new List<Collider>();
 
-        // Host bookkeeping: the transform version last seen, and the pose before a step for constraints.
+        // Host bookkeeping: the transform version last seen.
         internal long SeenTransformVersion;
-        internal Vector3 FreezePosition;
-        internal Quaternion FreezeRotation;
 
         /// <summary>The body in <see cref="PhysicsScene.world"/>; None while the entity is inactive.</summary>
         public BodyHandle body => _body;
@@ -139,14 +137,11 @@ namespace Fulcrum.Components
         }
 
         /// <summary>
-        /// Frozen degrees of freedom, in world axes. Fulcrum's core has no axis locks, so:
-        /// FreezeRotation (all three axes) zeroes the inverse inertia, which is exact — the solver
-        /// cannot turn the body. Any other combination is enforced around each step: frozen
-        /// velocity components are zeroed before it, and after it frozen position components
-        /// are put back and the frozen components of the step's rotation removed.
-        /// Departure from Unity (PhysX builds locks into the solver): with partial locks the
-        /// contacts of that step still see a free body, so a locked body hit off-centre loses
-        /// the part of the response along the locked axes instead of redistributing it.
+        /// Frozen degrees of freedom, in world axes: the core's <see cref="AxisLocks"/>
+        /// (<see cref="BodyRef.Locks"/>), enforced inside the solver as PhysX does, so contacts
+        /// and joints see the reduced mobility (a frozen axis has zero inverse mass, frozen
+        /// rotation axes are projected out of the inverse inertia; FreezeRotation is infinite
+        /// inertia). Frozen is exact: a frozen coordinate does not change at all.
         /// </summary>
         public RigidbodyConstraints constraints
         {
@@ -157,7 +152,7 @@ namespace Fulcrum.Components
                     throw new ArgumentException($"{this}: constraints has unknown bits 0x{(int)value:X}.", nameof(constraints));
                 ThrowIfStepping(nameof(constraints));
                 _constraints = value;
-                if (HasBody) ApplyMass();
+                if (HasBody) World.GetBody(_body).Locks = AxisLocksOf(value);
             }
         }
 
@@ -369,6 +364,7 @@ namespace Fulcrum.Components
             def.AngularDamping = _angularDamping;
             def.GravityScale = _useGravity ? 1f : 0f;
             def.Ccd = _collisionDetectionMode != CollisionDetectionMode.Discrete;
+            def.Locks = AxisLocksOf(_constraints);
             def.Name = name;
             _body = World.CreateBody(def);
             SeenTransformVersion = transform.HierarchyVersion;
@@ -388,9 +384,15 @@ namespace Fulcrum.Components
         }
 
         /// <summary>
+        /// Unity's constraint flags as the core's axis locks: the same six axes in the same
+        /// order, one bit higher (Unity's bit 0 is unused), so the map is a shift.
+        /// </summary>
+        internal static AxisLocks AxisLocksOf(RigidbodyConstraints c) => (AxisLocks)((int)c >> 1);
+
+        /// <summary>
         /// Recomputes mass properties from the attached colliders: their distribution scaled to
-        /// <see cref="mass"/>, the centre moved to <see cref="centerOfMass"/> when set, the
-        /// inverse inertia zeroed when all rotation is frozen.
+        /// <see cref="mass"/>, the centre moved to <see cref="centerOfMass"/> when set (frozen
+        /// rotation axes are the core's business: it projects the inertia).
         /// </summary>
         internal void ApplyMass()
         {
@@ -399,14 +401,6 @@ namespace Fulcrum.Components
             m = m.Mass > 0 ? m.WithMass(_mass) : new MassProperties(_mass, Vector3.Zero, Mat3.Identity * _mass);
             if (_centerOfMass.HasValue) m.Center = _centerOfMass.Value;
             World.SetMassProperties(_body, m);
-            if ((_constraints & RigidbodyConstraints.FreezeRotation) == RigidbodyConstraints.FreezeRotation)
-            {
-                BodyStorage b = World.Bodies;
-                int i = _body.Index;
-                b.InverseInertiaPrincipal[i] = Vector3.Zero;
-                b.UpdateWorldInertia(i);
-                b.AngularVelocity[i] = Vector3.Zero;
-            }
         }
 
         // A body with a non-convex mesh must be kinematic (Unity: "non-convex MeshCollider with

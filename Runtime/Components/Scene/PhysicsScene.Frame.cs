@@ -164,8 +164,6 @@ namespace Fulcrum.Components
                 Rigidbody rb = _rigidbodies[k];
                 if (!rb.HasBody || rb.isKinematic) continue;
                 if (rb.HasSpeedCaps) rb.ClampSpeeds(b, rb.body.Index);
-                if (rb.constraints == RigidbodyConstraints.None) continue;
-                AxisFreeze.BeforeStep(b, rb.body.Index, rb.constraints, out rb.FreezePosition, out rb.FreezeRotation);
             }
         }
 
@@ -177,8 +175,6 @@ namespace Fulcrum.Components
                 Rigidbody rb = _rigidbodies[k];
                 if (!rb.HasBody) continue;
                 int i = rb.body.Index;
-                if (rb.constraints != RigidbodyConstraints.None && !rb.isKinematic)
-                    AxisFreeze.AfterStep(b, i, rb.constraints, rb.FreezePosition, rb.FreezeRotation);
                 if (rb.HasSpeedCaps && !rb.isKinematic) rb.ClampSpeeds(b, i);
                 rb.WriteTransform(new Pose(b.Position[i], b.Rotation[i]));
             }

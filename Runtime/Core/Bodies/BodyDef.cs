@@ -36,6 +36,12 @@ namespace Fulcrum
         public bool IsAwake;
         /// <summary>Continuous collision: sweep this body against the world so it cannot tunnel. Default: false.</summary>
         public bool Ccd;
+        /// <summary>
+        /// World axes the body may not translate along or rotate about (see <see cref="AxisLocks"/>):
+        /// enforced inside the solver, so contacts and joints see the reduced mobility. Dynamic
+        /// bodies only. Default: None.
+        /// </summary>
+        public AxisLocks Locks;
         /// <summary>A name for traces, errors and debugging. Default: null.</summary>
         public string? Name;
         /// <summary>Free for the user: a number carried back in events and queries. Default: 0.</summary>

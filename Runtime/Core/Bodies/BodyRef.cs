@@ -195,6 +195,20 @@ namespace Fulcrum
             }
         }
 
+        /// <summary>
+        /// World axes the body may not translate along or rotate about (see <see cref="AxisLocks"/>
+        /// and <see cref="World.SetAxisLocks"/>). Unknown bits throw before anything changes.
+        /// </summary>
+        public AxisLocks Locks
+        {
+            get => B.Locks[_slot];
+            set
+            {
+                _ = Writable;
+                _world.SetAxisLocks(Handle, value);
+            }
+        }
+
         /// <summary>Whether continuous collision sweeps this body.</summary>
         public bool Ccd
         {

@@ -26,6 +26,7 @@ namespace Fulcrum
             w.WriteArray(LinearDamping, n);
             w.WriteArray(AngularDamping, n);
             w.WriteArray(GravityScale, n);
+            w.WriteArray(Locks, n);
             w.WriteArray(PreviousPosition, n);
             w.WriteArray(PreviousRotation, n);
             w.WriteArray(StartLinearVelocity, n);
@@ -69,6 +70,7 @@ namespace Fulcrum
             b.LinearDamping = r.ReadSlots<float>("body linear damping", n, c);
             b.AngularDamping = r.ReadSlots<float>("body angular damping", n, c);
             b.GravityScale = r.ReadSlots<float>("body gravity scales", n, c);
+            b.Locks = r.ReadSlots<AxisLocks>("body axis locks", n, c);
             b.PreviousPosition = r.ReadSlots<System.Numerics.Vector3>("body previous positions", n, c);
             b.PreviousRotation = r.ReadSlots<System.Numerics.Quaternion>("body previous rotations", n, c);
             b.StartLinearVelocity = r.ReadSlots<System.Numerics.Vector3>("body step-start linear velocities", n, c);

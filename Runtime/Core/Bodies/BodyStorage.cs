@@ -33,6 +33,7 @@ namespace Fulcrum
         public float[] LinearDamping = Array.Empty<float>();
         public float[] AngularDamping = Array.Empty<float>();
         public float[] GravityScale = Array.Empty<float>();
+        public AxisLocks[] Locks = Array.Empty<AxisLocks>();         // None for almost every body: one byte read per integration
         public Vector3[] PreviousPosition = Array.Empty<Vector3>();  // pose at the start of the last step, for interpolation
         public Quaternion[] PreviousRotation = Array.Empty<Quaternion>();
         public Vector3[] StartLinearVelocity = Array.Empty<Vector3>();  // velocities at the start of the last step (before the solve),
@@ -91,6 +92,7 @@ namespace Fulcrum
             Array.Resize(ref LinearDamping, capacity);
             Array.Resize(ref AngularDamping, capacity);
             Array.Resize(ref GravityScale, capacity);
+            Array.Resize(ref Locks, capacity);
             Array.Resize(ref PreviousPosition, capacity);
             Array.Resize(ref PreviousRotation, capacity);
             Array.Resize(ref StartLinearVelocity, capacity);
@@ -110,11 +112,16 @@ namespace Fulcrum
             Array.Resize(ref UserData, capacity);
         }
 
-        /// <summary>Refreshes the world inverse inertia of a slot from its rotation.</summary>
+        /// <summary>
+        /// Refreshes the world inverse inertia of a slot from its rotation, projected onto the
+        /// free rotation axes when some are locked (<see cref="Dynamics.AxisLockMath.ProjectInertia"/>).
+        /// </summary>
         public void UpdateWorldInertia(int slot)
         {
             Mat3 r = Mat3.FromQuaternion(Rotation[slot] * InertiaFrame[slot]);
-            InverseInertiaWorld[slot] = Mat3.RotateDiagonal(r, InverseInertiaPrincipal[slot]);
+            Mat3 inverse = Mat3.RotateDiagonal(r, InverseInertiaPrincipal[slot]);
+            AxisLocks locks = Locks[slot] & AxisLocks.Angular;
+            InverseInertiaWorld[slot] = locks == 0 ? inverse : Dynamics.AxisLockMath.ProjectInertia(inverse, locks);
         }
 
         /// <summary>Sets the origin from the world centre of mass (after the centre moved).</summary>

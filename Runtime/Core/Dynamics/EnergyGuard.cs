@@ -97,7 +97,9 @@ namespace Fulcrum.Dynamics
             {
                 ref SolverBody b = ref c.Bodies[k];
                 if (b.IsDynamic == 0) continue;
-                _inertia[k] = b.InverseInertia.Inverse();
+                // Locked rotation axes make the projected inverse singular: the energy lives on
+                // the free axes, where the pseudo-inverse is the inertia the solver works with.
+                _inertia[k] = (b.Locks & AxisLocks.Angular) != 0 ? AxisLockMath.InverseOnFreeAxes(b.InverseInertia) : b.InverseInertia.Inverse();
                 if (!_exempt[Find(k)]) _any = true;
             }
         }

@@ -43,6 +43,14 @@ namespace Fulcrum.Dynamics
             w += dt * (b.InverseInertiaWorld[i] * b.Torque[i]);
             if (b.LinearDamping[i] > 0) v *= 1f / (1f + dt * b.LinearDamping[i]);
             if (b.AngularDamping[i] > 0) w *= 1f / (1f + dt * b.AngularDamping[i]);
+            AxisLocks locks = b.Locks[i];
+            if (locks != AxisLocks.None)
+            {
+                // Gravity and forces along a locked axis do nothing; a velocity set along one
+                // (by the user, or before the lock) is dropped here, before it moves the body.
+                v = AxisLockMath.MaskLinear(v, locks);
+                w = AxisLockMath.MaskAngular(w, locks);
+            }
             ClampSpeed(maxSpeed, b.Radius[i], ref v, ref w);
         }
 
@@ -105,7 +113,13 @@ namespace Fulcrum.Dynamics
                 BodyType type = b.Type[i];
                 if (type == BodyType.Static || !b.Awake[i]) continue;
                 b.Center[i] += b.LinearVelocity[i] * dt;
-                if (type == BodyType.Dynamic)
+                if (type == BodyType.Dynamic && (b.Locks[i] & AxisLocks.Angular) != 0)
+                {
+                    // Locked rotation axes: the body turns at its (allowed) angular velocity; the
+                    // free-body splitting would turn the momentum onto the locked axes.
+                    b.Rotation[i] = Rotation.Integrate(b.Rotation[i], b.AngularVelocity[i], dt);
+                }
+                else if (type == BodyType.Dynamic)
                 {
                     Quaternion q = b.Rotation[i];
                     Vector3 w = b.AngularVelocity[i];

@@ -19,7 +19,11 @@ namespace Fulcrum.Dynamics
         public float InverseMass;
         /// <summary>World angular velocity, rad/s.</summary>
         public Vector3 AngularVelocity;
-        /// <summary>Non-zero for dynamic bodies: only those are written back by the constraints.</summary>
+        /// <summary>
+        /// Non-zero for dynamic bodies: only those are written back by the constraints. Bit 0 is
+        /// set for every dynamic body; bits 1-6 carry its <see cref="AxisLocks"/>, so a body
+        /// without locks has exactly 1 and the lock checks cost a compare.
+        /// </summary>
         public int IsDynamic;
         /// <summary>World inverse inertia, frozen for the step.</summary>
         public Mat3 InverseInertia;
@@ -27,6 +31,23 @@ namespace Fulcrum.Dynamics
         public Vector3 DeltaPosition;
         /// <summary>Rotation since the start of the step (world frame, applied on the left).</summary>
         public Quaternion DeltaRotation;
+
+        /// <summary>The <see cref="IsDynamic"/> value of a dynamic body with <paramref name="locks"/>.</summary>
+        public static int DynamicFlags(AxisLocks locks) => 1 | ((int)locks << 1);
+
+        /// <summary>The body's axis locks (None for fixed bodies).</summary>
+        public readonly AxisLocks Locks => (AxisLocks)(IsDynamic >> 1);
+
+        /// <summary>Whether some translation axis is locked: the inverse mass is then per axis.</summary>
+        public readonly bool HasLinearLocks => (IsDynamic & ((int)AxisLocks.Linear << 1)) != 0;
+
+        /// <summary>The per-axis inverse mass: 1/m on the free axes, 0 on the locked ones.</summary>
+        public readonly Vector3 LinearInverseMass =>
+            HasLinearLocks ? InverseMass * AxisLockMath.LinearMask(Locks) : new Vector3(InverseMass);
+
+        /// <summary>d . M^-1 d for a unit direction d (the scalar inverse mass without locks).</summary>
+        public readonly float InverseMassAlong(Vector3 d) =>
+            HasLinearLocks ? Vector3.Dot(LinearInverseMass, d * d) : InverseMass;
 
         /// <summary>
         /// The small-angle rotation vector of <see cref="DeltaRotation"/> (2 x its vector part),
@@ -54,7 +75,7 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public void ApplyImpulse(Vector3 r, Vector3 p)
         {
-            LinearVelocity += InverseMass * p;
+            LinearVelocity += InverseMass * (IsDynamic > 1 ? AxisLockMath.MaskLinear(p, Locks) : p);
             AngularVelocity += InverseInertia * Vector3.Cross(r, p);
         }
 
@@ -67,7 +88,7 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public void ApplyPositionImpulse(Vector3 r, Vector3 p)
         {
-            DeltaPosition += InverseMass * p;
+            DeltaPosition += InverseMass * (IsDynamic > 1 ? AxisLockMath.MaskLinear(p, Locks) : p);
             Rotate(InverseInertia * Vector3.Cross(r, p));
         }
 

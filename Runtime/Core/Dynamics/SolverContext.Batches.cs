@@ -28,7 +28,7 @@ namespace Fulcrum.Dynamics
                 body.AngularVelocity = s.AngularVelocity[i];
                 body.InverseMass = dynamic ? s.InverseMass[i] : 0;
                 body.InverseInertia = dynamic ? s.InverseInertiaWorld[i] : default;
-                body.IsDynamic = dynamic ? 1 : 0;
+                body.IsDynamic = dynamic ? SolverBody.DynamicFlags(s.Locks[i]) : 0;
                 body.DeltaPosition = Vector3.Zero;
                 body.DeltaRotation = Quaternion.Identity;
                 _startCenter[k] = s.Center[i];
@@ -68,7 +68,7 @@ namespace Fulcrum.Dynamics
                 if (m.PointCount > ContactManifold.MaxPoints) m.PointCount = ContactManifold.MaxPoints;
                 int a = IndexOf(m.BodyA), b = IndexOf(m.BodyB);
                 int c = ConstraintColoring.Assign(_colorMask, a, Bodies[a].IsDynamic != 0, b, Bodies[b].IsDynamic != 0);
-                if (direct && TakeWideCandidate(k, c, m)) continue;
+                if (direct && TakeWideCandidate(k, c, m, a, b)) continue;
                 _color[k] = c;
                 _contactCursor[c]++;
                 _pointCursor[c] += m.PointCount;

@@ -83,6 +83,17 @@ namespace Fulcrum.Dynamics
                             body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
                             continue;
                         }
+                        AxisLocks locks = body.Locks & AxisLocks.Angular;
+                        if (locks != 0)
+                        {
+                            // Locked rotation axes: no free-body splitting (it would turn the
+                            // momentum onto the locked axes); the projected inertia follows the turn.
+                            body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
+                            Quaternion turned = body.DeltaRotation * c._startRotation[k];
+                            body.InverseInertia = AxisLockMath.ProjectInertia(
+                                Mat3.RotateDiagonal(Mat3.FromQuaternion(turned * s.InertiaFrame[slot]), ii), locks);
+                            continue;
+                        }
                         Quaternion start0 = c._startRotation[k];
                         Quaternion q = body.DeltaRotation * start0;
                         Integrator.RotateFreeBody(ref q, ref body.AngularVelocity, ii, s.InertiaFrame[slot], h);

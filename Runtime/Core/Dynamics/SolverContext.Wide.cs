@@ -54,11 +54,11 @@ namespace Fulcrum.Dynamics
             return direct;
         }
 
-        // Marks manifold k of colour c as a wide candidate (its colour plus Buckets) when the
-        // wide path may take it.
-        bool TakeWideCandidate(int k, int c, in ContactManifold m)
+        // Marks manifold k of colour c (between solver bodies a and b) as a wide candidate (its
+        // colour plus Buckets) when the wide path may take it.
+        bool TakeWideCandidate(int k, int c, in ContactManifold m, int a, int b)
         {
-            if (c >= ConstraintColoring.MaxColors || !ContactSolverWide.MayAccept(m)) return false;
+            if (c >= ConstraintColoring.MaxColors || !ContactSolverWide.MayAccept(m) || HasLinearLocks(a, b)) return false;
             _color[k] = c + Buckets;
             _wideCursor[c]++;
             return true;
@@ -166,7 +166,8 @@ namespace Fulcrum.Dynamics
                 _wideStart[c] = _wideGroups;
                 for (int k = _contactStart[c], end = _contactStart[c + 1]; k < end; k++)
                 {
-                    if (wide && c < ConstraintColoring.MaxColors && ContactSolverWide.Accepts(Contacts[k]))
+                    if (wide && c < ConstraintColoring.MaxColors && ContactSolverWide.Accepts(Contacts[k])
+                        && !HasLinearLocks(Contacts[k].BodyA, Contacts[k].BodyB))
                     {
                         _wideSource[lanes++] = k;
                         continue;
@@ -196,6 +197,11 @@ namespace Fulcrum.Dynamics
                     _wideManifold[g * width + lane] = lane < used.Length ? Contacts[used[lane]].Manifold : -1;
             }
         }
+
+        // The lanes carry one inverse mass per body: a body with a locked translation axis has
+        // three (AxisLocks), so its contacts take the scalar path, which is exact for them.
+        // Rotation locks ride in the inverse inertia and stay wide.
+        bool HasLinearLocks(int a, int b) => Bodies[a].HasLinearLocks || Bodies[b].HasLinearLocks;
 
         // The constraint indices of group g's used lanes.
         ReadOnlySpan<int> WideLanes(int g)
@@ -280,7 +286,7 @@ namespace Fulcrum.Dynamics
 
         bool BeginWide(bool wide, bool keepRows) => false;
 
-        bool TakeWideCandidate(int k, int c, in ContactManifold m) => false;
+        bool TakeWideCandidate(int k, int c, in ContactManifold m, int a, int b) => false;
 
         void PrepareWide(IslandBuilder islands, float warmContacts) { }
 

@@ -260,6 +260,8 @@ namespace Fulcrum.Dynamics
                 {
                     Quaternion turn = rotation * Quaternion.Conjugate(s.Rotation[i]);
                     s.AngularVelocity[i] = Vector3.Transform(s.AngularVelocity[i], turn);
+                    // Turned about a free axis, the spin stays on the free axes but for rounding.
+                    if (body.IsDynamic > 1) s.AngularVelocity[i] = AxisLockMath.MaskAngular(s.AngularVelocity[i], body.Locks);
                 }
                 s.Rotation[i] = rotation;
                 s.SyncOriginFromCenter(i);

@@ -65,6 +65,26 @@ namespace Fulcrum.Scenes
             _ => "obj",
         };
 
+        /// <summary>The six single axes of <see cref="AxisLocks"/> in scene order, with their scene names.</summary>
+        internal static readonly (AxisLocks Axis, string Name)[] LockAxes =
+        {
+            (AxisLocks.LinearX, "linearX"), (AxisLocks.LinearY, "linearY"), (AxisLocks.LinearZ, "linearZ"),
+            (AxisLocks.AngularX, "angularX"), (AxisLocks.AngularY, "angularY"), (AxisLocks.AngularZ, "angularZ"),
+        };
+
+        /// <summary>Parses one <c>lockAxes</c> name (<c>"linearX"</c> .. <c>"angularZ"</c>); false for an unknown spelling.</summary>
+        public static bool TryParse(string s, out AxisLocks axis)
+        {
+            foreach ((AxisLocks a, string name) in LockAxes)
+                if (s == name)
+                {
+                    axis = a;
+                    return true;
+                }
+            axis = AxisLocks.None;
+            return false;
+        }
+
         /// <summary>Parses a body type; false for an unknown spelling.</summary>
         public static bool TryParse(string s, out BodyType t)
         {

@@ -118,6 +118,10 @@ namespace Fulcrum.Scenes
                     if (b.AngularVelocity != Vector3.Zero) Error(P(path, "angularVelocity"), "a static body cannot move: must be [0, 0, 0]");
                     if (b.Ccd) Error(P(path, "ccd"), "a static body cannot use continuous collision");
                 }
+                if ((b.LockAxes & ~AxisLocks.All) != 0)
+                    Error(P(path, "lockAxes"), $"unknown axis bits 0x{(int)b.LockAxes:X} (AxisLocks has linearX/Y/Z and angularX/Y/Z)");
+                else if (b.LockAxes != AxisLocks.None && b.Type != BodyType.Dynamic)
+                    Error(P(path, "lockAxes"), $"a {SceneNames.Of(b.Type)} body is not moved by the solver: axis locks are for dynamic bodies");
             }
 
             void MassAndMaterial(float? mass, string? material, BodyType type, string path)

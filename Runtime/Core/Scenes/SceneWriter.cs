@@ -61,6 +61,13 @@ namespace Fulcrum.Scenes
             if (!Same(b.Velocity, Vector3.Zero)) o.Add("velocity", b.Velocity);
             if (!Same(b.AngularVelocity, Vector3.Zero)) o.Add("angularVelocity", b.AngularVelocity);
             if (b.Ccd) o.Add("ccd", true);
+            if (b.LockAxes != AxisLocks.None)
+            {
+                var axes = new List<JsonValue>();
+                foreach ((AxisLocks axis, string name) in SceneNames.LockAxes)
+                    if ((b.LockAxes & axis) != 0) axes.Add(JsonValue.From(name));
+                o.Add("lockAxes", JsonValue.Array(axes));
+            }
             return o.Value;
         }
 

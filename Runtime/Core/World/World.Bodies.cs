@@ -23,6 +23,7 @@ namespace Fulcrum
             Validate.NonNegative(def.AngularDamping, "body.AngularDamping");
             Limits.CheckGravityScale(def.GravityScale, "body.GravityScale");
             if (def.Mass != 0) Limits.CheckMass(def.Mass, "body.Mass");
+            CheckAxisLocks(def.Locks, "body.Locks");
 
             BodyStorage b = Bodies;
             int i = b.Allocate();
@@ -32,8 +33,11 @@ namespace Fulcrum
             b.PreviousPosition[i] = def.Position;
             b.PreviousRotation[i] = rotation;
             bool moves = def.Type != BodyType.Static;
-            b.LinearVelocity[i] = moves ? def.LinearVelocity : default;
-            b.AngularVelocity[i] = moves ? def.AngularVelocity : default;
+            b.Locks[i] = def.Locks;
+            // A dynamic body starts without motion along its locked axes.
+            AxisLocks locks = def.Type == BodyType.Dynamic ? def.Locks : AxisLocks.None;
+            b.LinearVelocity[i] = moves ? Dynamics.AxisLockMath.MaskLinear(def.LinearVelocity, locks) : default;
+            b.AngularVelocity[i] = moves ? Dynamics.AxisLockMath.MaskAngular(def.AngularVelocity, locks) : default;
             b.Force[i] = default;
             b.Torque[i] = default;
             b.LinearDamping[i] = def.LinearDamping;

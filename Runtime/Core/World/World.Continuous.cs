@@ -120,6 +120,18 @@ namespace Fulcrum
             b.Position[body] = at.Position;
             b.Rotation[body] = at.Rotation;
             b.SyncCenterFromOrigin(body);
+            AxisLocks locks = b.Locks[body] & AxisLocks.Linear;
+            if (locks != 0)
+            {
+                // The sweep interpolates the centre; along a locked axis it must stay exactly
+                // where the solver left it, not a rounding of it.
+                Vector3 c = b.Center[body], c1 = sweep.Center1;
+                if ((locks & AxisLocks.LinearX) != 0) c.X = c1.X;
+                if ((locks & AxisLocks.LinearY) != 0) c.Y = c1.Y;
+                if ((locks & AxisLocks.LinearZ) != 0) c.Z = c1.Z;
+                b.Center[body] = c;
+                b.SyncOriginFromCenter(body);
+            }
             b.UpdateWorldInertia(body);
         }
 

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using Fulcrum.Dynamics;
 using Fulcrum.Mathematics;
 
 namespace Fulcrum.SoftBodies
@@ -164,7 +165,10 @@ namespace Fulcrum.SoftBodies
             BodyStorage b = _bodies;
             if (b.Type[slot] != BodyType.Dynamic) return 0f;
             Vector3 rn = Vector3.Cross(point - b.Center[slot], direction);
-            return b.InverseMass[slot] + Vector3.Dot(rn, b.InverseInertiaWorld[slot] * rn);
+            // Locked translation axes take no part of the push (AxisLocks); rotation locks are in the inertia.
+            AxisLocks locks = b.Locks[slot] & AxisLocks.Linear;
+            float linear = locks == 0 ? b.InverseMass[slot] : b.InverseMass[slot] * Vector3.Dot(AxisLockMath.LinearMask(locks), direction * direction);
+            return linear + Vector3.Dot(rn, b.InverseInertiaWorld[slot] * rn);
         }
 
         /// <summary>The velocity of the body's material point at <paramref name="point"/>, m/s.</summary>
@@ -182,7 +186,7 @@ namespace Fulcrum.SoftBodies
             if (b.Type[slot] != BodyType.Dynamic) return;
             int e = _entryOfSlot[slot];
             if (e < 0) return; // only tracked bodies are pushed (every candidate is tracked)
-            Vector3 dx = impulse * b.InverseMass[slot];
+            Vector3 dx = AxisLockMath.MaskLinear(impulse * b.InverseMass[slot], b.Locks[slot]);
             Vector3 dTheta = b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], impulse);
             float invH = 1f / h;
             Quaternion dq = Rotation.FromRotationVector(dTheta);
@@ -206,7 +210,7 @@ namespace Fulcrum.SoftBodies
             if (b.Type[slot] != BodyType.Dynamic) return;
             int e = _entryOfSlot[slot];
             if (e < 0) return;
-            Vector3 dv = impulse * b.InverseMass[slot];
+            Vector3 dv = AxisLockMath.MaskLinear(impulse * b.InverseMass[slot], b.Locks[slot]);
             Vector3 dw = b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], impulse);
             b.LinearVelocity[slot] += dv;
             b.AngularVelocity[slot] += dw;

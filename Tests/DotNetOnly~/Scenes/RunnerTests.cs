@@ -74,7 +74,7 @@ namespace Fulcrum.Tests.Scenes
             Assert.That(output, Is.Empty);
             Assert.That(Lines(error), Is.EqualTo(new[]
             {
-                $"{path}: $.bodies[0].colour: unknown field (expected one of: name, type, shape, mass, density, material, position, rotation, velocity, angularVelocity, ccd) (line 5, column 114)",
+                $"{path}: $.bodies[0].colour: unknown field (expected one of: name, type, shape, mass, density, material, position, rotation, velocity, angularVelocity, ccd, lockAxes) (line 5, column 114)",
                 $"{path}: $.bodies[0].mass: must be > 0, got -1 (line 5, column 100)",
                 $"{path}: 2 errors",
             }));

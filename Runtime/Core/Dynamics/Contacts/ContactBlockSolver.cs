@@ -61,7 +61,7 @@ namespace Fulcrum.Dynamics
         {
             ref ContactRow a = ref points[i].Normal;
             ref ContactRow b = ref points[j].Normal;
-            float mass = c.InvMassA + c.InvMassB;
+            float mass = AxisLockMath.InverseMassAlong(c.InvMassA, c.Normal) + AxisLockMath.InverseMassAlong(c.InvMassB, c.Normal);
             float k11 = mass + Vector3.Dot(a.AngularA, a.VelocityA) + Vector3.Dot(a.AngularB, a.VelocityB);
             float k22 = mass + Vector3.Dot(b.AngularA, b.VelocityA) + Vector3.Dot(b.AngularB, b.VelocityB);
             float k12 = mass + Vector3.Dot(a.AngularA, b.VelocityA) + Vector3.Dot(a.AngularB, b.VelocityB);

@@ -22,8 +22,11 @@ namespace Fulcrum.Dynamics
         public int PointCount;
         /// <summary>Index of the manifold in the contact set (for the write-back).</summary>
         public int Manifold;
-        /// <summary>1/m of A and B (0 for fixed bodies).</summary>
-        public float InvMassA, InvMassB;
+        /// <summary>
+        /// Per-axis 1/m of A and B (0 for fixed bodies, 0 along a locked translation axis, see
+        /// <see cref="AxisLocks"/>); the three components are equal for a body without locks.
+        /// </summary>
+        public Vector3 InvMassA, InvMassB;
         /// <summary>Unit normal from A to B.</summary>
         public Vector3 Normal;
         /// <summary>Tangents with t1 x t2 = normal.</summary>

@@ -11,13 +11,13 @@ namespace Fulcrum.Dynamics
     internal readonly struct ContactPairMotion
     {
         public readonly Vector3 Normal;
-        public readonly float InvMassA, InvMassB;
+        public readonly Vector3 InvMassA, InvMassB;
         /// <summary>n . (dpB - dpA), m.</summary>
         public readonly float Drift;
         public readonly Vector3 DThetaA, DThetaB;
         public readonly Softness Softness;
 
-        public ContactPairMotion(Vector3 normal, float invMassA, float invMassB, float drift, Vector3 dThetaA, Vector3 dThetaB, in Softness softness)
+        public ContactPairMotion(Vector3 normal, Vector3 invMassA, Vector3 invMassB, float drift, Vector3 dThetaA, Vector3 dThetaB, in Softness softness)
         {
             Normal = normal;
             InvMassA = invMassA;

@@ -23,7 +23,7 @@ namespace Fulcrum.Dynamics
             ref SolverBody a = ref bodies[c.BodyA];
             ref SolverBody b = ref bodies[c.BodyB];
             Vector3 n = c.Normal;
-            float mA = c.InvMassA, mB = c.InvMassB;
+            Vector3 mA = c.InvMassA, mB = c.InvMassB;
             float deepest = 0;
             for (int k = c.FirstPoint, end = c.FirstPoint + c.PointCount; k < end; k++)
             {

@@ -45,8 +45,8 @@ namespace Fulcrum.Dynamics
             c.FirstPoint = firstPoint;
             c.PointCount = m.PointCount;
             c.Manifold = manifoldIndex;
-            c.InvMassA = a.InverseMass;
-            c.InvMassB = b.InverseMass;
+            c.InvMassA = a.LinearInverseMass;
+            c.InvMassB = b.LinearInverseMass;
             Vector3 n = m.Normal;
             c.Normal = n;
             TangentBasis.Build(n, out c.Tangent1, out c.Tangent2);
@@ -63,7 +63,7 @@ namespace Fulcrum.Dynamics
             {
                 ref ContactPoint mp = ref ContactManifold.Point(ref m, i);
                 ref ContactConstraintPoint p = ref points[firstPoint + i];
-                p.Normal.Setup(mp.AnchorA, mp.AnchorB, n, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
+                p.Normal.Setup(mp.AnchorA, mp.AnchorB, n, a.InverseMassAlong(n), a.InverseInertia, b.InverseMassAlong(n), b.InverseInertia);
                 p.Normal.Impulse = warmScale * mp.NormalImpulse;
                 friction1 += mp.TangentImpulse1;
                 friction2 += mp.TangentImpulse2;
@@ -82,8 +82,8 @@ namespace Fulcrum.Dynamics
             float inv = 1f / m.PointCount;
             centroidA *= inv;
             centroidB *= inv;
-            c.Friction1.Setup(centroidA, centroidB, c.Tangent1, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
-            c.Friction2.Setup(centroidA, centroidB, c.Tangent2, a.InverseMass, a.InverseInertia, b.InverseMass, b.InverseInertia);
+            c.Friction1.Setup(centroidA, centroidB, c.Tangent1, a.InverseMassAlong(c.Tangent1), a.InverseInertia, b.InverseMassAlong(c.Tangent1), b.InverseInertia);
+            c.Friction2.Setup(centroidA, centroidB, c.Tangent2, a.InverseMassAlong(c.Tangent2), a.InverseInertia, b.InverseMassAlong(c.Tangent2), b.InverseInertia);
             c.Friction1.Impulse = warmScale * friction1;
             c.Friction2.Impulse = warmScale * friction2;
             float radius = 0;
@@ -171,7 +171,7 @@ namespace Fulcrum.Dynamics
             ref SolverBody a = ref bodies[c.BodyA];
             ref SolverBody b = ref bodies[c.BodyB];
             var v = new BodyPairVelocity { LinearA = a.LinearVelocity, AngularA = a.AngularVelocity, LinearB = b.LinearVelocity, AngularB = b.AngularVelocity };
-            float mA = c.InvMassA, mB = c.InvMassB;
+            Vector3 mA = c.InvMassA, mB = c.InvMassB;
             Vector3 n = c.Normal;
             var motion = new ContactPairMotion(n, mA, mB, Vector3.Dot(n, b.DeltaPosition - a.DeltaPosition), a.DeltaAngle, b.DeltaAngle, c.Softness);
             int first = c.FirstPoint, end = first + c.PointCount;
@@ -387,7 +387,7 @@ namespace Fulcrum.Dynamics
             ref SolverBody a = ref bodies[c.BodyA];
             ref SolverBody b = ref bodies[c.BodyB];
             Vector3 vA = a.LinearVelocity, wA = a.AngularVelocity, vB = b.LinearVelocity, wB = b.AngularVelocity;
-            float mA = c.InvMassA, mB = c.InvMassB;
+            Vector3 mA = c.InvMassA, mB = c.InvMassB;
             Vector3 n = c.Normal;
             float e = c.Restitution;
             for (int k = c.FirstPoint, end = c.FirstPoint + c.PointCount; k < end; k++)

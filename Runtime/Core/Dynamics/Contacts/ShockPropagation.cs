@@ -259,6 +259,8 @@ namespace Fulcrum.Dynamics
             if (vn >= 0) return;
             if (up != Vector3.Zero) u.LinearVelocity -= (vn / lift) * up;
             else u.LinearVelocity -= vn * n;
+            // A body with locked translation axes does not move along them (AxisLocks).
+            if (u.HasLinearLocks) u.LinearVelocity = AxisLockMath.MaskLinear(u.LinearVelocity, u.Locks);
         }
     }
 }

@@ -43,11 +43,16 @@ namespace Fulcrum.Dynamics
         /// <summary>K = (mA + mB) n.n + aA.IA^-1 aA + aB.IB^-1 aB, inverted with a guard.</summary>
         public void ComputeMass(in SolverBody a, in SolverBody b)
         {
-            float k = (a.InverseMass + b.InverseMass) * Linear.LengthSquared()
+            float k = ((a.IsDynamic | b.IsDynamic) > 1
+                      ? Vector3.Dot(a.LinearInverseMass + b.LinearInverseMass, Linear * Linear)
+                      : (a.InverseMass + b.InverseMass) * Linear.LengthSquared())
                     + Vector3.Dot(AngularA, a.InverseInertia * AngularA)
                     + Vector3.Dot(AngularB, b.InverseInertia * AngularB);
             EffectiveMass = k > 1e-30f ? 1f / k : 0f;
         }
+
+        // The linear direction as body x moves along it: without the locked translation axes.
+        readonly Vector3 LinearOf(in SolverBody x) => x.IsDynamic > 1 ? AxisLockMath.MaskLinear(Linear, x.Locks) : Linear;
 
         /// <summary>J v.</summary>
         public readonly float Velocity(in SolverBody a, in SolverBody b) =>
@@ -57,9 +62,9 @@ namespace Fulcrum.Dynamics
         /// <summary>Applies the impulse <paramref name="lambda"/> along the row to both bodies.</summary>
         public readonly void Apply(ref SolverBody a, ref SolverBody b, float lambda)
         {
-            a.LinearVelocity -= (a.InverseMass * lambda) * Linear;
+            a.LinearVelocity -= (a.InverseMass * lambda) * LinearOf(a);
             a.AngularVelocity -= a.InverseInertia * (lambda * AngularA);
-            b.LinearVelocity += (b.InverseMass * lambda) * Linear;
+            b.LinearVelocity += (b.InverseMass * lambda) * LinearOf(b);
             b.AngularVelocity += b.InverseInertia * (lambda * AngularB);
         }
 
@@ -116,9 +121,9 @@ namespace Fulcrum.Dynamics
             if (C == 0 || EffectiveMass == 0) return;
             C = Math.Clamp(C, -maxC, maxC);
             float lambda = -beta * C * EffectiveMass;
-            a.DeltaPosition -= (a.InverseMass * lambda) * Linear;
+            a.DeltaPosition -= (a.InverseMass * lambda) * LinearOf(a);
             a.Rotate(-(a.InverseInertia * (lambda * AngularA)));
-            b.DeltaPosition += (b.InverseMass * lambda) * Linear;
+            b.DeltaPosition += (b.InverseMass * lambda) * LinearOf(b);
             b.Rotate(b.InverseInertia * (lambda * AngularB));
         }
     }

@@ -176,6 +176,7 @@ namespace Fulcrum.Dynamics
                 float kAxis = Vector3.Dot(axis, k * axis);
                 delta = kAxis > 1e-30f ? (-Vector3.Dot(axis, dw) / kAxis) * axis : Vector3.Zero;
             }
+            else if ((a.IsDynamic | b.IsDynamic) > 1) delta = -(AxisLockMath.InverseOnFreeAxes(k) * dw);
             else if (!k.TryInvert(out Mathematics.Mat3 mass)) return;
             else delta = -(mass * dw);
             Vector3 old = impulse;

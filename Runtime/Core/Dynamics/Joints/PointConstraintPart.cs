@@ -20,10 +20,12 @@ namespace Fulcrum.Dynamics
         public void ComputeMass(in SolverBody a, in SolverBody b, Vector3 rA, Vector3 rB)
         {
             Mat3 sA = Mat3.Skew(rA), sB = Mat3.Skew(rB);
-            Mat3 k = Mat3.Diagonal(new Vector3(a.InverseMass + b.InverseMass))
+            Mat3 k = Mat3.Diagonal(a.LinearInverseMass + b.LinearInverseMass)
                    - sA * a.InverseInertia * sA
                    - sB * b.InverseInertia * sB;
-            EffectiveMass = k.Inverse();
+            // Axis locks may leave directions in which the anchors cannot separate at all: solve
+            // the rest (the pseudo-inverse) instead of dropping the joint with a zero inverse.
+            EffectiveMass = (a.IsDynamic | b.IsDynamic) > 1 ? AxisLockMath.PseudoInverse(k) : k.Inverse();
         }
 
         /// <summary>Applies the impulse <paramref name="p"/> to B at rB and its opposite to A at rA.</summary>

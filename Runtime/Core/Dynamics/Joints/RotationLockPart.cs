@@ -17,7 +17,10 @@ namespace Fulcrum.Dynamics
         public Vector3 Impulse;
 
         /// <summary>Builds K^-1.</summary>
-        public void ComputeMass(in SolverBody a, in SolverBody b) => EffectiveMass = (a.InverseInertia + b.InverseInertia).Inverse();
+        public void ComputeMass(in SolverBody a, in SolverBody b) =>
+            // Locked rotation axes zero rows of the projected inverse inertias: invert the rest.
+            EffectiveMass = (a.IsDynamic | b.IsDynamic) > 1 ? AxisLockMath.InverseOnFreeAxes(a.InverseInertia + b.InverseInertia)
+                : (a.InverseInertia + b.InverseInertia).Inverse();
 
         /// <summary>The error vector of two world joint frames, rad.</summary>
         public static Vector3 Error(Quaternion frameA, Quaternion frameB) =>

@@ -59,6 +59,7 @@ namespace Fulcrum.Scenes
                 def.AngularVelocity = b.AngularVelocity;
                 def.Mass = b.Mass ?? 0;
                 def.Ccd = b.Ccd;
+                def.Locks = b.LockAxes;
                 try
                 {
                     BodyHandle h = world.CreateBody(def);

@@ -44,5 +44,13 @@ namespace Fulcrum.Scenes
 
         /// <summary><c>ccd</c>: continuous collision for this body. Default: false.</summary>
         public bool Ccd { get; set; }
+
+        /// <summary>
+        /// <c>lockAxes</c> (an extension of fulcrum-scene/1): the world axes a dynamic body may not
+        /// move along or turn about, as an array of names from <c>"linearX"</c>, <c>"linearY"</c>,
+        /// <c>"linearZ"</c>, <c>"angularX"</c>, <c>"angularY"</c>, <c>"angularZ"</c> (see
+        /// <see cref="AxisLocks"/>). Default: none (the field is left out).
+        /// </summary>
+        public AxisLocks LockAxes { get; set; }
     }
 }

@@ -93,8 +93,26 @@ namespace Fulcrum.Scenes
             b.Velocity = r.Vector("velocity", b.Velocity);
             b.AngularVelocity = r.Vector("angularVelocity", b.AngularVelocity);
             b.Ccd = r.Bool("ccd", b.Ccd);
+            b.LockAxes = ReadLockAxes(r.Array("lockAxes"), d);
             r.Finish();
             return b;
+        }
+
+        // "lockAxes": ["linearY", "angularX"]: each name once, each an axis of AxisLocks.
+        static AxisLocks ReadLockAxes(IReadOnlyList<JsonValue> items, SceneDiagnostics d)
+        {
+            AxisLocks locks = AxisLocks.None;
+            foreach (JsonValue item in items)
+            {
+                if (item.Kind != JsonKind.String)
+                    d.Add(item.Path, $"expected an axis name (linearX, linearY, linearZ, angularX, angularY or angularZ), got {item.KindName}", item);
+                else if (!SceneNames.TryParse(item.AsString, out AxisLocks axis))
+                    d.Add(item.Path, $"unknown axis '{item.AsString}' (expected linearX, linearY, linearZ, angularX, angularY or angularZ)", item);
+                else if ((locks & axis) != 0)
+                    d.Add(item.Path, $"axis '{item.AsString}' is listed twice", item);
+                else locks |= axis;
+            }
+            return locks;
         }
 
         /// <summary>Reads a shape object; null (with errors) when its type is missing or unknown.</summary>
