@@ -272,7 +272,10 @@ namespace Fulcrum.Tests.Solver
         {
             var (wide, wideTurn, groups) = LockedTower(true);
             var (scalar, scalarTurn, _) = LockedTower(false);
+#if NET
+            // The SIMD contact path exists only in the .NET build (Unity's runs every contact scalar).
             if (System.Numerics.Vector.IsHardwareAccelerated) Assert.That(groups, Is.GreaterThan(0), "some contacts went wide");
+#endif
             for (int i = 0; i < wide.Length; i++)
             {
                 Assert.That(Vector3.Distance(wide[i], scalar[i]), Is.LessThan(2e-3f), $"box {i}");
