@@ -34,6 +34,7 @@ sealed class LiveServer : IDisposable
     readonly string _dist;
     readonly object _sync = new();
     readonly List<Task> _clients = new();
+    readonly List<Task> _pages = new();  // page and script requests being answered
     readonly CancellationTokenSource _stop = new();
     readonly Task _accepting;
     byte[] _data = new byte[1 << 16];   // append-only: bytes below _length never change
@@ -106,6 +107,13 @@ sealed class LiveServer : IDisposable
     public void Dispose()
     {
         _stop.Cancel();
+        // Answer the page requests already taken before stopping the listener, which aborts
+        // the responses in flight (a page asked for just as a --live-exit run ended came back
+        // empty).
+        Task[] pages;
+        lock (_sync) pages = _pages.ToArray();
+        try { Task.WaitAll(pages, TimeSpan.FromSeconds(2)); }
+        catch (AggregateException) { }
         ViewCommand.Stop(_listener);
         try { _accepting.Wait(TimeSpan.FromSeconds(2)); }
         catch (AggregateException) { }
@@ -135,7 +143,12 @@ sealed class LiveServer : IDisposable
             }
             else
             {
-                _ = Task.Run(() => ViewCommand.Serve(context, _dist, null));
+                Task page = Task.Run(() => ViewCommand.Serve(context, _dist, null));
+                lock (_sync)
+                {
+                    _pages.RemoveAll(t => t.IsCompleted);
+                    _pages.Add(page);
+                }
             }
         }
     }
