@@ -54,9 +54,8 @@ namespace Fulcrum.Dynamics
         /// holds at rest (lambda = m_eff (massScale / impulseScale) bias), is multiplied by r.
         /// The row then still holds the force of the uncapped spring, k C, while pulling at
         /// MaxBias at most (up to r = <see cref="MaxStiffening"/>; beyond, the force grows no
-        /// more). Capping the bias alone capped
-        /// the force too: a 1000 kg load on a chain of 1 kg links sank to the floor.
-        /// Continuous at r = 1.
+        /// more). Capping the bias alone capped the force too: a 1000 kg load on a chain of 1 kg
+        /// links sank to the floor. Continuous at r = 1.
         /// </summary>
         public void Capped(float biasLength, out float biasScale, out float massScale, out float impulseScale)
         {
