@@ -34,7 +34,9 @@ namespace Fulcrum.Dynamics
             // Restitution once the bodies have reached each other (a speculative contact closes
             // during the position update), as TGS does after its substeps.
             context.LoadVelocities();
+            context.Guard.BeginAfterSolve(context);
             for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
+            context.Guard.EndAfterSolve(context);
             context.StoreVelocities();
             if (s.PositionIterations > 0)
             {

@@ -49,6 +49,9 @@ namespace Fulcrum.Dynamics
         ContactManifold[] _manifolds = Array.Empty<ContactManifold>();
         WorldSettings _settings;
         float _dt, _h, _invH;
+
+        /// <summary>The step's length, s.</summary>
+        public float StepDt => _dt;
         float _previousDt;
         ContactStep _contactStep;
         JointSolver.StepParameters _jointParameters;

@@ -31,12 +31,14 @@ namespace Fulcrum.Dynamics
                 for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true);
                 if (s.ShockPropagation) context.Shock();
                 context.IntegratePositions();
+                context.Guard.BeginAfterSolve(context);
                 for (int i = 0; i < s.RelaxIterations; i++) context.Solve(useBias: false);
                 // Restitution for the impacts of this substep. The points of a face contact
                 // share one body: the bounce needs the same number of Gauss-Seidel passes as any
                 // other row to reach -e v0 at every point.
                 if (context.HasRestitution)
                     for (int i = 0; i < s.Iterations; i++) context.ApplyRestitution();
+                context.Guard.EndAfterSolve(context);
                 // The guard's window closes after restitution too: a bounce (e <= 1) gives back
                 // at most the energy of the approach, but its targets come from the substep's
                 // start, and in a jointed island a compound spun from 114 to 483 rad/s in one

@@ -66,10 +66,13 @@ namespace Fulcrum.Tests.Robustness
         // the position passes were capped), 69 (TGS 1x8, no relax: unsatisfiable joints created
         // 2.4 m violated lifted a 1.6 t body 12 m while the correction cap stiffened rows without
         // limit), 887 (PGS: a 621 kg capsule turning 2 rad per step spun to 866 rad/s in the
-        // free-rotation splitting).
+        // free-rotation splitting), 1547 (TGS, one substep: the relax passes, working on the
+        // step's start contact geometry, spun a compound turning 1.9 rad per step from 113 to 483
+        // rad/s in a contact-only island).
         [TestCase(66)]
         [TestCase(69)]
         [TestCase(887)]
+        [TestCase(1547)]
         [TestCase(119)]
         [TestCase(229)]
         [TestCase(1498)]
