@@ -56,8 +56,8 @@ namespace Fulcrum.Dynamics
         Vector3[] _linear = new Vector3[16];
         Vector3[] _angular = new Vector3[16];
         // Velocities after the solve (before the relax and restitution passes).
-        Vector3[] _restLinear = new Vector3[16];
-        Vector3[] _restAngular = new Vector3[16];
+        Vector3[] _solvedLinear = new Vector3[16];
+        Vector3[] _solvedAngular = new Vector3[16];
         bool _anyAfterSolve;
         Mat3[] _inertia = new Mat3[16];
         // Per island root: sums of v0.M.v0, v0.M.dv, dv.M.dv and the mass.
@@ -79,9 +79,8 @@ namespace Fulcrum.Dynamics
             _count = n;
             _any = false;
             _anyAfterSolve = false;
-            // Contact-only islands are left alone by the velocity-solve check (below); they are
-            // grouped only for the restitution check.
-            // Contact-only islands are checked after the solve only where that can go wrong: in a
+            // Contact-only islands are left alone by the velocity-solve check (below). They are
+            // checked after the solve only where that can go wrong: in a
             // step with restitution, or with a body turning more than half a radian (the relax
             // passes work on the step's start geometry). A cheap look at the bodies decides.
             bool fastTurn = false;
@@ -141,8 +140,8 @@ namespace Fulcrum.Dynamics
             _jointed = new bool[bodies];
             _linear = new Vector3[bodies];
             _angular = new Vector3[bodies];
-            _restLinear = new Vector3[bodies];
-            _restAngular = new Vector3[bodies];
+            _solvedLinear = new Vector3[bodies];
+            _solvedAngular = new Vector3[bodies];
             _inertia = new Mat3[bodies];
             _k00 = new double[bodies];
             _k01 = new double[bodies];
@@ -239,8 +238,8 @@ namespace Fulcrum.Dynamics
             SolverBody[] bodies = c.Bodies;
             for (int k = 1; k < _count; k++)
             {
-                _restLinear[k] = bodies[k].LinearVelocity;
-                _restAngular[k] = bodies[k].AngularVelocity;
+                _solvedLinear[k] = bodies[k].LinearVelocity;
+                _solvedAngular[k] = bodies[k].AngularVelocity;
             }
         }
 
@@ -267,7 +266,7 @@ namespace Fulcrum.Dynamics
                 int r = Find(k);
                 if (_exempt[r] || _jointed[r]) continue;
                 float m = 1f / b.InverseMass;
-                Vector3 v0 = _linear[k], w0 = _angular[k], vr = _restLinear[k], wr = _restAngular[k];
+                Vector3 v0 = _linear[k], w0 = _angular[k], vr = _solvedLinear[k], wr = _solvedAngular[k];
                 Vector3 dv = b.LinearVelocity - vr, dw = b.AngularVelocity - wr;
                 Mat3 inertia = _inertia[k];
                 _k00[r] += m * Vector3.Dot(v0, v0) + Vector3.Dot(w0, inertia * w0);
@@ -304,8 +303,8 @@ namespace Fulcrum.Dynamics
                 if (_exempt[r] || _jointed[r]) continue;
                 float s = _scale[r];
                 if (s == 1f) continue;
-                b.LinearVelocity = _restLinear[k] + s * (b.LinearVelocity - _restLinear[k]);
-                b.AngularVelocity = _restAngular[k] + s * (b.AngularVelocity - _restAngular[k]);
+                b.LinearVelocity = _solvedLinear[k] + s * (b.LinearVelocity - _solvedLinear[k]);
+                b.AngularVelocity = _solvedAngular[k] + s * (b.AngularVelocity - _solvedAngular[k]);
             }
         }
 
