@@ -108,6 +108,7 @@ namespace Fulcrum.SoftBodies
             {
                 x.CopyTo(X, 0);
                 xPrev.CopyTo(XPrev, 0);
+                PositionsChanged();
                 xStart.CopyTo(XStart, 0);
                 v.CopyTo(V, 0);
                 w.CopyTo(W, 0);

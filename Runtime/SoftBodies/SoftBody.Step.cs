@@ -16,7 +16,8 @@ namespace Fulcrum.SoftBodies
 
         /// <summary>
         /// The soft body's inertia is scaled up for a step to at least the mass of the heaviest
-        /// dynamic body it may touch divided by this (see <see cref="ScaleInertia"/>): 0.5, so
+        /// dynamic body resting on it (<see cref="ShapeContactSolver.HeaviestBody"/>) divided by
+        /// this (see <see cref="ScaleInertia"/>): 0.5, so
         /// twice that mass. Measured: at 2 (half the mass) plates settled as well, but a 1000 kg
         /// crate dropped on a 43 kg slab kept rocking at 0.1 m/s after 5 s; at 0.5 it rests.
         /// </summary>
@@ -29,9 +30,26 @@ namespace Fulcrum.SoftBodies
             if (CollideWithShapes) Contacts.Gather(World, this, dt, coupling);
             AttachmentSolver.Track(World, Attachments, coupling);
             SelfContacts?.FindPairs(X, V, dt);
-            float heaviest = MathF.Max(CollideWithShapes ? Contacts.HeaviestBody(World) : 0f, AttachmentSolver.HeaviestBody(World, Attachments));
+            float heaviest = MathF.Max(CollideWithShapes ? Contacts.HeaviestBody(World, X, Down()) : 0f, AttachmentSolver.HeaviestBody(World, Attachments));
             ScaleInertia(heaviest / (InertiaRatio * TotalMass));
-            if (Tets.Length > 0) TetData.Pack(W, FreeW, M);
+            if (Tets.Length > 0)
+            {
+                TetData.Pack(W, FreeW, M);
+                // The last step's end measured J on these very positions: with no tet inverted
+                // there is nothing to mark (the common case: one J pass per step, not two).
+                if (!_cleanEnd) _startLargestJ = VolumeFloor.BeginStep(TetData, X);
+                _cleanEnd = false;
+                // Pressed from outside: it may touch a rigid shape, or is attached to a body.
+                TetData.Loaded = Attachments.Length > 0 || (CollideWithShapes && (Contacts.CandidateCount > 0 || Contacts.MeshPairCount > 0));
+            }
+        }
+
+        // The unit direction of this body's gravity (zero without gravity).
+        Vector3 Down()
+        {
+            Vector3 g = World.Gravity * GravityScale;
+            float length = g.Length();
+            return length > 0f ? g / length : Vector3.Zero;
         }
 
         /// <summary>
@@ -72,7 +90,23 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>
-        /// True when every vertex position and velocity is finite and inside the world bounds;
+        /// A tet's volume ratio |J| beyond which the body counts as blown apart (when no tet was
+        /// beyond it at the start of the step): 10. No elastic material changes volume tenfold;
+        /// the stable Neo-Hookean energy there is at least 40 lambda per unit volume.
+        /// </summary>
+        public const float MaxVolumeRatio = 10f;
+
+        // The largest |J| at the start of this step (VolumeFloor.BeginStep, or the last step's end).
+        float _startLargestJ;
+        // The last step ended with no tet inverted and nothing has moved a vertex since.
+        bool _cleanEnd;
+
+        /// <summary>Forgets what the last step's end measured (call after anything moves a vertex between steps).</summary>
+        internal void PositionsChanged() => _cleanEnd = false;
+
+        /// <summary>
+        /// True when every vertex position and velocity is finite and inside the world bounds
+        /// and no tet has blown apart (|J| beyond <see cref="MaxVolumeRatio"/> in this step);
         /// otherwise puts every vertex back at its step-start position at rest and returns false.
         /// </summary>
         internal bool KeepFinite()
@@ -84,6 +118,19 @@ namespace Fulcrum.SoftBodies
                 Vector3 x = X[i], v = V[i];
                 bad = !float.IsFinite(x.X + x.Y + x.Z + v.X + v.Y + v.Z)
                     || MathF.Abs(x.X) > bound || MathF.Abs(x.Y) > bound || MathF.Abs(x.Z) > bound;
+            }
+            // Blown apart: a tet whose volume changed more than MaxVolumeRatio times in one step
+            // from a body that had none (finite, but no material stores that: the first step of
+            // an explosion, which otherwise ran on to 1e25 J of strain within the world bounds).
+            if (!bad && Tets.Length > 0)
+            {
+                float largest = VolumeFloor.LargestJ(TetData, X, out bool inverted);
+                bad = _startLargestJ <= MaxVolumeRatio && !(largest <= MaxVolumeRatio);
+                if (!bad)
+                {
+                    _startLargestJ = largest;
+                    _cleanEnd = !inverted;
+                }
             }
             if (!bad) return true;
             Array.Copy(XStart, X, X.Length);
@@ -158,6 +205,9 @@ namespace Fulcrum.SoftBodies
                 NewtonSolver!.Step(this, _target, h);
                 if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
                 if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
+                // After the contacts, as the XPBD pass's floor comes after them: what a heavy body
+                // pressed on the tets is taken back before the next Newton step sees it.
+                if (Tets.Length > 0) VolumeFloor.HoldAll(TetData, X, 0, Tets.Length);
             }
             if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: false);
             SelfContacts?.Solve(X, W);

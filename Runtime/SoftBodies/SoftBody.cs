@@ -373,6 +373,7 @@ namespace Fulcrum.SoftBodies
             ThrowIfStepping();
             X[vertex] = position;
             XPrev[vertex] = position;
+            PositionsChanged();
         }
 
         /// <summary>Sets one vertex's velocity, m/s (ignored for pinned vertices). Not during a step.</summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.IO;
 using System.Numerics;
 using Fulcrum.SoftBodies;
@@ -83,6 +84,27 @@ namespace Fulcrum.Tests.Robustness
             Assert.That(reportedStep, Is.EqualTo(stepIndex));
             for (int n = 0; n < 30; n++) w.Step(1 / 60f);
             foreach (Vector3 x in body.X) Assert.That(float.IsFinite(x.X + x.Y + x.Z));
+            Assert.That(system.DivergenceCount, Is.EqualTo(1));
+        }
+
+        [Test]
+        public void A_soft_body_blown_apart_within_the_bounds_is_put_back_and_reported()
+        {
+            var w = new World();
+            Ground(w);
+            SoftBodyHandle jelly = w.CreateSoftBody(SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.5f), 2, 2, 2), MaterialPresets.Jelly, new Vector3(0, 0.3f, 0)));
+            for (int n = 0; n < 20; n++) w.Step(1 / 60f);
+            SoftBodySystem system = SoftBodySystem.Of(w)!;
+            SoftBody body = w.GetSoftBody(jelly);
+            var start = body.X.ToArray();
+            body.V[3] = new Vector3(0, 3000, 0); // finite, and 50 m in one step: what an exploding solve does
+            w.Step(1 / 60f);
+            var j = new float[body.ElementCount];
+            body.ComputeElementJ(j);
+            Assert.That(system.DivergenceCount, Is.EqualTo(1));
+            Assert.That(body.X, Is.EqualTo(start), "back at the step's start");
+            foreach (float x in j) Assert.That(MathF.Abs(x), Is.LessThanOrEqualTo(SoftBody.MaxVolumeRatio));
+            for (int n = 0; n < 30; n++) w.Step(1 / 60f);
             Assert.That(system.DivergenceCount, Is.EqualTo(1));
         }
 

@@ -90,7 +90,10 @@ namespace Fulcrum.Tests.SoftBodies
             // solver cannot resolve the impact strain within one step, and the (huge) modulus
             // times that unresolved strain is not energy the motion can get back.
             Assert.That(worstMechanical, Is.LessThanOrEqualTo(initial * 1.01f), "kinetic + potential never grows");
-            Assert.That(end.StrainEnergy, Is.LessThan(0.1f * initial), "the strain left after settling");
+            // At 1e3 Pa the cube is crushed by its own weight (rho g L / E = 4.9) to 76 % of its
+            // volume, the tets on the ground held at J >= 0.2 by the volume floor: 75 J of strain
+            // at 2 s, 64 J once it has stopped ringing (4 s on); 67 J at 2 s without the floor.
+            Assert.That(end.StrainEnergy, Is.LessThan((e <= 1e3f ? 0.12f : 0.1f) * initial), "the strain left after settling");
         }
 
         [Test]

@@ -217,8 +217,7 @@ namespace Fulcrum.Tests.SoftScenes
         // inverts. A stiff slab is bouncy: a light crate bounces, lands tilted on an edge and
         // may leave the slab (E 1e7, 300 kg from 2 m ends beside it), so the depth is taken only
         // while the crate is above the slab. Measured: lowest over the slab 0.12 m (E 1e6, 3 t
-        // from 2 m), min J 0.34 there. Overloads that crush the slab flat (E 1e5 under 1 t from
-        // 2 m, E 1e6 under 10 t from 2 m) bottom out with inverted elements (min J -0.2): a limit.
+        // from 2 m), min J 0.34 there. Overloads that would crush the slab flat are the next test's.
         [Test]
         public void A_crate_dropped_on_a_slab_stops_in_it_without_inverting_an_element(
             [Values(1e6f, 1e7f)] float youngs, [Values(300f, 1000f, 3000f)] float mass, [Values(0.5f, 2f)] float drop)
@@ -234,6 +233,53 @@ namespace Fulcrum.Tests.SoftScenes
             Assert.That(run.AllFinite(), Is.True);
             Assert.That(lowest, Is.GreaterThan(0.1f), "the crate stops in the slab");
             Assert.That(minJ, Is.GreaterThan(0.2f), "no element inverts");
+        }
+
+        // crate-on-slab overloaded: a 1 or 10 t crate (23 to 230 times the slab) dropped 0.5 or 2 m
+        // on the slab at E = 1e4 to 1e6 Pa, nu 0.45 or 0.49: up to 20 times the energy the slab
+        // can store before its tets reach J = 0 (the stable energy is finite there). Before the
+        // volume floor (VolumeFloor: a body pressed from outside keeps every tet at J >= 0.2)
+        // the crate ended 8 mm above the floor with min J -0.55 (1 t) and -1.0 (10 t). Measured
+        // with it: lowest over the slab 22 mm (10 t from 2 m on E 1e4), min J 0.12 under 1 t and
+        // 0.03 under 10 t (E 1e4 from 0.5 m: the floor is taken back each iteration and the
+        // contacts press again). Open: from 2 m on E 1e5 (1 t) and E 1e6 (10 t) the slab throws
+        // the crate back up tilted (2.3 rad/s, from the six-tet cells' shared diagonal) and it
+        // lands beside the slab; the slab is unharmed.
+        [Test]
+        public void An_overload_that_would_crush_the_slab_flat_inverts_no_element(
+            [Values(1e4f, 1e5f, 1e6f)] float youngs, [Values(0.45f, 0.49f)] float nu, [Values(1000f, 10000f)] float mass, [Values(0.5f, 2f)] float drop)
+        {
+            SoftSceneRun run = SoftSceneRun.Load("crate-on-slab", d =>
+            {
+                d.SoftBodies[0].Material!.YoungsModulus = youngs;
+                d.SoftBodies[0].Material!.PoissonRatio = nu;
+                d.Bodies[1].Mass = mass;
+                d.Bodies[1].Position = new Vector3(0, 0.305f + 0.25f + drop, 0);
+            });
+            (float lowest, float minJ) = DropCrate(run, run.Scene.GetBody("crate"), 4f);
+            TestContext.Out.WriteLine($"E {youngs:G} nu {nu}, {mass} kg from {drop} m: lowest over the slab {lowest:F4} m, min J {minJ:F3}, diverged {SoftBodySystem.Of(run.World)!.DivergenceCount}");
+            Assert.That(run.AllFinite(), Is.True);
+            Assert.That(SoftBodySystem.Of(run.World)!.DivergenceCount, Is.EqualTo(0));
+            Assert.That(lowest, Is.GreaterThan(0.015f), "the crate never reaches the floor through the slab");
+            Assert.That(minJ, Is.GreaterThan(mass <= 1000f ? 0.1f : 0.02f), "no element inverts");
+        }
+
+        // The same floor in the Newton solver (after each Newton step's contacts): a 1 t crate
+        // from 2 m on the slab at E = 1e4 Pa. Before: lowest 8.6 mm, min J -0.34; now 28 mm, 0.13.
+        [Test]
+        public void The_Newton_solver_keeps_an_overloaded_slab_from_inverting_too()
+        {
+            SoftSceneRun run = SoftSceneRun.Load("crate-on-slab", d =>
+            {
+                d.SoftBodies[0].Material!.YoungsModulus = 1e4f;
+                d.SoftBodies[0].Solver = "newton";
+                d.Bodies[1].Position = new Vector3(0, 0.305f + 0.25f + 2f, 0);
+            });
+            (float lowest, float minJ) = DropCrate(run, run.Scene.GetBody("crate"), 4f);
+            TestContext.Out.WriteLine($"newton, E 1e4, 1000 kg from 2 m: lowest over the slab {lowest:F4} m, min J {minJ:F3}");
+            Assert.That(run.AllFinite(), Is.True);
+            Assert.That(lowest, Is.GreaterThan(0.015f));
+            Assert.That(minJ, Is.GreaterThan(0.05f));
         }
 
         // Runs a crate-on-slab scene for the given time: the lowest the 0.5 m crate's bottom came

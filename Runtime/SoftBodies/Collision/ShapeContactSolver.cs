@@ -21,7 +21,12 @@ namespace Fulcrum.SoftBodies
     internal sealed class ShapeContactSolver
     {
         int[] _shapes = Array.Empty<int>();
+        // Per gathered shape: its bounds swept over the step, and how far its surface may move in it.
+        Aabb[] _swept = Array.Empty<Aabb>();
+        float[] _travel = Array.Empty<float>();
         int _count;
+        // How far a vertex may come this step (radius, its speed, gravity): see HeaviestBody.
+        float _reach;
         readonly MeshVertexContacts _meshes = new MeshVertexContacts();
         // Per vertex over the current substep: normal corrections (Lagrange multipliers, kg m)
         // and the friction spent against them, so the cone bounds the whole substep.
@@ -53,7 +58,8 @@ namespace Fulcrum.SoftBodies
                 maxSpeed2 = MathF.Max(maxSpeed2, v[i].LengthSquared());
             }
             float gravity = (world.Gravity * body.GravityScale).Length();
-            bounds = bounds.Expanded(body.CollisionRadius + MathF.Sqrt(maxSpeed2) * dt + gravity * dt * dt + 0.01f);
+            _reach = body.CollisionRadius + MathF.Sqrt(maxSpeed2) * dt + gravity * dt * dt + 0.01f;
+            bounds = bounds.Expanded(_reach);
 
             ShapeStorage s = world.Shapes;
             BodyStorage b = world.Bodies;
@@ -64,12 +70,16 @@ namespace Fulcrum.SoftBodies
                 if ((s.CollidesWith[shape] & (1u << body.Layer)) == 0 || (body.CollidesWith & (1u << s.Layer[shape])) == 0) continue;
                 int owner = s.Body[shape];
                 Aabb box;
+                float travel = 0f;
                 if (b.Type[owner] == BodyType.Static) box = s.WorldAabb[shape];
                 else
                 {
-                    box = s.Geometry[shape].ComputeAabb(world.ShapeWorldPose(shape));
+                    Aabb end = s.Geometry[shape].ComputeAabb(world.ShapeWorldPose(shape));
                     Pose start = new Pose(b.PreviousPosition[owner], b.PreviousRotation[owner]) * s.LocalPose[shape];
-                    box = Aabb.Union(box, s.Geometry[shape].ComputeAabb(start));
+                    Aabb from = s.Geometry[shape].ComputeAabb(start);
+                    box = Aabb.Union(end, from);
+                    // How far the shape's surface may move in the step: its bounds' centre and size.
+                    travel = Vector3.Distance(end.Center, from.Center) + (end.Extents - from.Extents).Length();
                 }
                 if (!box.Overlaps(bounds)) continue;
                 if (s.Geometry[shape].Type == ShapeType.TriangleMesh)
@@ -77,21 +87,51 @@ namespace Fulcrum.SoftBodies
                     _meshes.Gather(world, shape, body, dt, gravity);
                     continue;
                 }
-                if (_count == _shapes.Length) Array.Resize(ref _shapes, Math.Max(8, 2 * _count));
+                if (_count == _shapes.Length)
+                {
+                    Array.Resize(ref _shapes, Math.Max(8, 2 * _count));
+                    Array.Resize(ref _swept, _shapes.Length);
+                    Array.Resize(ref _travel, _shapes.Length);
+                }
+                _swept[_count] = box;
+                _travel[_count] = travel;
                 _shapes[_count++] = shape;
                 coupling.Track(owner);
             }
         }
 
-        /// <summary>The largest mass of a dynamic body among the gathered shapes' owners, kg (0 for none).</summary>
-        public float HeaviestBody(World world)
+        /// <summary>
+        /// The largest mass of a dynamic body among the gathered shapes' owners that rests on
+        /// this body in this step, kg (0 for none): some vertex may come within reach of the
+        /// shape's underside (its outward normal there within 60 degrees of
+        /// <paramref name="down"/>; with no gravity, any side). Only such a body needs the
+        /// soft body to carry its weight, which is what the inertia scaling this feeds is for
+        /// (<see cref="SoftBody.InertiaRatio"/>); and that scaling also divides gravity, so a
+        /// soft body scaled for a heavy body that merely touches it floats: a slab standing on
+        /// its edge against a 1 t crate's side climbed it to 2.5 m and blew apart.
+        /// </summary>
+        public float HeaviestBody(World world, Vector3[] x, Vector3 down)
         {
             float heaviest = 0;
             BodyStorage b = world.Bodies;
+            ShapeStorage s = world.Shapes;
             for (int k = 0; k < _count; k++)
             {
-                int owner = world.Shapes.Body[_shapes[k]];
-                if (b.Type[owner] == BodyType.Dynamic) heaviest = MathF.Max(heaviest, b.Mass[owner]);
+                int shape = _shapes[k];
+                int owner = s.Body[shape];
+                if (b.Type[owner] != BodyType.Dynamic || b.Mass[owner] <= heaviest) continue;
+                Aabb near = _swept[k].Expanded(_reach);
+                // The body is at its start-of-step pose here (RigidCoupling.Track put it back).
+                Pose pose = world.ShapeWorldPose(shape);
+                ShapeGeometry geometry = s.Geometry[shape];
+                float radius = _reach + _travel[k];
+                for (int i = 0; i < x.Length; i++)
+                {
+                    if (!near.Contains(x[i])) continue;
+                    if (down != Vector3.Zero && !(ShapeDistance.Query(geometry, pose, x[i], radius, out _, out Vector3 n) && Vector3.Dot(n, down) > 0.5f)) continue;
+                    heaviest = b.Mass[owner];
+                    break;
+                }
             }
             return heaviest;
         }

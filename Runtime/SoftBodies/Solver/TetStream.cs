@@ -46,10 +46,17 @@ namespace Fulcrum.SoftBodies
         public readonly float[] Gradients;
 
         /// <summary>
-        /// Per vertex (W, FreeW, M, 0), packed once per step so that a kernel loads a vertex's
-        /// three mass values with one 16-byte load (<see cref="Pack"/>).
+        /// Per vertex (W, FreeW, M, inverted), packed once per step so that a kernel loads a vertex's
+        /// three mass values with one 16-byte load (<see cref="Pack"/>). The fourth value is 1
+        /// once a tet of the vertex was seen inverted in this step (<see cref="VolumeFloor"/>).
         /// </summary>
         public readonly Vector4[] Masses;
+
+        /// <summary>
+        /// Whether the body may be pressed from outside in this step (a rigid shape it may
+        /// touch, or an attachment): the <see cref="VolumeFloor"/> holds its tets only then.
+        /// </summary>
+        public bool Loaded;
 
         public TetStream(int count, int vertices)
         {
@@ -85,7 +92,7 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        /// <summary>Packs (W, FreeW, M) per vertex; call after anything changes them, before the substeps.</summary>
+        /// <summary>Packs (W, FreeW, M, 0) per vertex; call after anything changes them, before the substeps.</summary>
         public void Pack(float[] w, float[] freeW, float[] m)
         {
             for (int i = 0; i < Masses.Length; i++) Masses[i] = new Vector4(w[i], freeW[i], m[i], 0f);

@@ -16,6 +16,7 @@ namespace Fulcrum.SoftBodies
         /// One Gauss-Seidel pass over tets [start, end). Undamped: damping is a velocity pass
         /// after the substep (<see cref="RayleighDamping"/>). Each correction is made free of
         /// net angular impulse (<see cref="TorqueFree"/>) unless the tet has a pinned or attached vertex.
+        /// A tet that was near the <see cref="VolumeFloor"/> is then held above it.
         /// With <paramref name="keep"/> each tet's gradients are stored in the stream for the damping pass.
         /// </summary>
         public static void Solve<TModel>(in TModel model, TetStream tets, Vector2[] lambdas, bool keep, Vector3[] x, Vector3[] xPrev,
@@ -36,6 +37,9 @@ namespace Fulcrum.SoftBodies
                 Vector3 x0 = x[a], x1 = x[b], x2 = x[c], x3 = x[d];
                 Mat3 restInverse = RestInverse(tets, e);
                 Mat3 f = DeformationGradient.Of(x0, x1, x2, x3, restInverse);
+                // J - 1 as the wide kernel has it (double, then float), so both take the same tets.
+                float jm1 = (float)(StableNeoHookeanEnergy.Determinant(f) - 1.0);
+                bool nearFloor = jm1 < VolumeFloor.Trigger - 1f;
                 model.Constraints(f, out float cD, out Mat3 dD, out float cH, out Mat3 dH);
                 DeformationGradient.VertexGradients(dD, restInverse, out Vector3 d0, out Vector3 d1, out Vector3 d2, out Vector3 d3);
                 DeformationGradient.VertexGradients(dH, restInverse, out Vector3 h0, out Vector3 h1, out Vector3 h2, out Vector3 h3);
@@ -62,7 +66,11 @@ namespace Fulcrum.SoftBodies
                 ref Vector2 lambda = ref lambdas[e];
                 float rD = -cD - aD * lambda.X;
                 float rH = -cH - aH * lambda.Y;
-                if (!XpbdConstraintPair.Solve(kDD + aD, kDH, kHH + aH, rD, rH, out float dlD, out float dlH)) continue;
+                if (!XpbdConstraintPair.Solve(kDD + aD, kDH, kHH + aH, rD, rH, out float dlD, out float dlH))
+                {
+                    if (nearFloor) VolumeFloor.Hold(tets, e, x);
+                    continue;
+                }
                 lambda.X += dlD;
                 lambda.Y += dlH;
                 Vector3 g0 = dlD * d0 + dlH * h0, g1 = dlD * d1 + dlH * h1, g2 = dlD * d2 + dlH * h2, g3 = dlD * d3 + dlH * h3;
@@ -72,6 +80,7 @@ namespace Fulcrum.SoftBodies
                 x[b] = x1 + w1 * g1;
                 x[c] = x2 + w2 * g2;
                 x[d] = x3 + w3 * g3;
+                if (nearFloor) VolumeFloor.Hold(tets, e, x);
             }
         }
 

@@ -16,7 +16,8 @@ namespace Fulcrum.SoftBodies
     /// never collide). Every float and double operation is the scalar kernel's, in its order
     /// (no fused multiply-add; the logarithm is Math.Log per lane), so the results are
     /// bit-identical to it and the solve does not depend on how a colour is split into
-    /// blocks, chunks or threads.
+    /// blocks, chunks or threads. Lanes near the <see cref="VolumeFloor"/> are then held above
+    /// it by the scalar projection.
     /// </summary>
     internal static class XpbdTetSolverWide
     {
@@ -36,12 +37,21 @@ namespace Fulcrum.SoftBodies
                 TwoBeta = Vector256.Create(2.0 * model.Beta),
             };
             var block = new Block();
+            Vector256<float> floorTrigger = Vector256.Create(VolumeFloor.Trigger - 1f);
             int e = start;
             for (; e + 8 <= end; e += 8)
             {
                 if (!Gradients(ref block, k, tets, x, e)) continue;
                 uint write = Multipliers(ref block, k, tets, lambdas, keep, e);
                 if (write != 0) Correct(ref block, tets, x, xPrev, e, write);
+                // Lanes near the volume floor (J below its trigger before the projection), one by one.
+                uint low = (Vector256.LessThan(block.CH, floorTrigger) & block.Active).ExtractMostSignificantBits();
+                while (low != 0)
+                {
+                    int lane = BitOperations.TrailingZeroCount(low);
+                    low &= low - 1;
+                    VolumeFloor.Hold(tets, e + lane, x);
+                }
             }
             return e;
         }
