@@ -222,12 +222,7 @@ namespace Fulcrum.Tests.SoftScenes
         public void A_crate_dropped_on_a_slab_stops_in_it_without_inverting_an_element(
             [Values(1e6f, 1e7f)] float youngs, [Values(300f, 1000f, 3000f)] float mass, [Values(0.5f, 2f)] float drop)
         {
-            SoftSceneRun run = SoftSceneRun.Load("crate-on-slab", d =>
-            {
-                d.SoftBodies[0].Material!.YoungsModulus = youngs;
-                d.Bodies[1].Mass = mass;
-                d.Bodies[1].Position = new Vector3(0, 0.305f + 0.25f + drop, 0);
-            });
+            SoftSceneRun run = LoadCrate(youngs, 0.45f, mass, drop);
             (float lowest, float minJ) = DropCrate(run, run.Scene.GetBody("crate"), 4f);
             TestContext.Out.WriteLine($"E {youngs:G}, {mass} kg from {drop} m: lowest over the slab {lowest:F4} m, min J {minJ:F3}");
             Assert.That(run.AllFinite(), Is.True);
@@ -249,13 +244,7 @@ namespace Fulcrum.Tests.SoftScenes
         public void An_overload_that_would_crush_the_slab_flat_inverts_no_element(
             [Values(1e4f, 1e5f, 1e6f)] float youngs, [Values(0.45f, 0.49f)] float nu, [Values(1000f, 10000f)] float mass, [Values(0.5f, 2f)] float drop)
         {
-            SoftSceneRun run = SoftSceneRun.Load("crate-on-slab", d =>
-            {
-                d.SoftBodies[0].Material!.YoungsModulus = youngs;
-                d.SoftBodies[0].Material!.PoissonRatio = nu;
-                d.Bodies[1].Mass = mass;
-                d.Bodies[1].Position = new Vector3(0, 0.305f + 0.25f + drop, 0);
-            });
+            SoftSceneRun run = LoadCrate(youngs, nu, mass, drop);
             (float lowest, float minJ) = DropCrate(run, run.Scene.GetBody("crate"), 4f);
             TestContext.Out.WriteLine($"E {youngs:G} nu {nu}, {mass} kg from {drop} m: lowest over the slab {lowest:F4} m, min J {minJ:F3}, diverged {SoftBodySystem.Of(run.World)!.DivergenceCount}");
             Assert.That(run.AllFinite(), Is.True);
@@ -269,18 +258,24 @@ namespace Fulcrum.Tests.SoftScenes
         [Test]
         public void The_Newton_solver_keeps_an_overloaded_slab_from_inverting_too()
         {
-            SoftSceneRun run = SoftSceneRun.Load("crate-on-slab", d =>
-            {
-                d.SoftBodies[0].Material!.YoungsModulus = 1e4f;
-                d.SoftBodies[0].Solver = "newton";
-                d.Bodies[1].Position = new Vector3(0, 0.305f + 0.25f + 2f, 0);
-            });
+            SoftSceneRun run = LoadCrate(1e4f, 0.45f, 1000f, 2f, "newton");
             (float lowest, float minJ) = DropCrate(run, run.Scene.GetBody("crate"), 4f);
             TestContext.Out.WriteLine($"newton, E 1e4, 1000 kg from 2 m: lowest over the slab {lowest:F4} m, min J {minJ:F3}");
             Assert.That(run.AllFinite(), Is.True);
             Assert.That(lowest, Is.GreaterThan(0.015f));
             Assert.That(minJ, Is.GreaterThan(0.05f));
         }
+
+        // crate-on-slab with the slab's E, nu and solver, and the crate's mass and drop height above the slab.
+        static SoftSceneRun LoadCrate(float youngs, float nu, float mass, float drop, string? solver = null) =>
+            SoftSceneRun.Load("crate-on-slab", d =>
+            {
+                d.SoftBodies[0].Material!.YoungsModulus = youngs;
+                d.SoftBodies[0].Material!.PoissonRatio = nu;
+                if (solver != null) d.SoftBodies[0].Solver = solver;
+                d.Bodies[1].Mass = mass;
+                d.Bodies[1].Position = new Vector3(0, 0.305f + 0.25f + drop, 0);
+            });
 
         // Runs a crate-on-slab scene for the given time: the lowest the 0.5 m crate's bottom came
         // while above the slab (|x|, |z| < 0.35 m), and the smallest element J.
