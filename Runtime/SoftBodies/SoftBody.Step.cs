@@ -40,7 +40,7 @@ namespace Fulcrum.SoftBodies
                 if (!_cleanEnd) _startLargestJ = VolumeFloor.BeginStep(TetData, X);
                 _cleanEnd = false;
                 // Pressed from outside: it may touch a rigid shape, or is attached to a body.
-                TetData.Loaded = Attachments.Length > 0 || (CollideWithShapes && (Contacts.CandidateCount > 0 || Contacts.MeshPairCount > 0));
+                TetData.Loaded = Touching;
             }
         }
 

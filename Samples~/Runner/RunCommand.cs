@@ -86,7 +86,7 @@ static class RunCommand
         World w = scene.World;
         SoftBodies.SoftBodySystem? soft = SoftBodies.SoftBodySystem.Of(w);
         if (soft != null && soft.DivergenceCount > 0)
-            output.WriteLine($"diverged: {soft.DivergenceCount} time(s); last: soft body {soft.LastDiverged} became non-finite or left the world bounds in step {soft.LastDivergedStep} and was put back at rest");
+            output.WriteLine($"diverged: {soft.DivergenceCount} time(s); last: soft body {soft.LastDiverged} became non-finite, left the world bounds or blew apart in step {soft.LastDivergedStep} and was put back at rest");
         if (w.DivergenceCount == 0) return soft != null && soft.DivergenceCount > 0 ? Cli.ExitDiverged : Cli.ExitOk;
         Divergence d = w.LastDivergence;
         string name = $"#{d.Body.Index}";
