@@ -131,7 +131,9 @@ namespace Fulcrum.SoftBodies
             if (mesh == null) throw new ArgumentNullException(nameof(mesh));
             switch (mesh)
             {
-                case SceneSoftBox box: return SoftMesh.Box(box.Size, box.Cells[0], box.Cells[1], box.Cells[2]);
+                case SceneSoftBox box:
+                    TetSplit split = box.Split == "five" ? TetSplit.Five : box.Split == "six-mirrored" ? TetSplit.SixMirrored : TetSplit.Six;
+                    return SoftMesh.Box(box.Size, box.Cells[0], box.Cells[1], box.Cells[2], split);
                 case SceneSoftSphere sphere: return SoftMesh.Sphere(sphere.Radius, sphere.Cells);
                 case SceneSoftCapsule capsule: return SoftMesh.Capsule(capsule.Radius, capsule.HalfHeight, capsule.Cells);
                 case SceneSoftBeam beam: return SoftMesh.Beam(beam.Length, beam.Thickness, beam.Cells);

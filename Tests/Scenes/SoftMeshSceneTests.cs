@@ -74,10 +74,24 @@ namespace Fulcrum.Tests.Scenes
         [TestCase("{ \"type\": \"tetgen\", \"node\": \"a.node\" }", "$.softBodies[0].mesh.ele: missing required field")]
         [TestCase("{ \"type\": \"tetgen\", \"node\": \" \", \"ele\": \"a.ele\" }", "$.softBodies[0].mesh.node: must be a non-empty file path")]
         [TestCase("{ \"type\": \"obj\" }", "$.softBodies[0].mesh.file: missing required field")]
+        [TestCase("{ \"type\": \"box\", \"size\": [1, 1, 1], \"split\": \"seven\" }", "$.softBodies[0].mesh.split: unknown split 'seven' (expected six, six-mirrored or five)")]
         [TestCase("{ \"type\": \"torus\", \"radius\": 1 }", "$.softBodies[0].mesh.type: unknown soft mesh type 'torus' (expected box, sphere, capsule, beam, cloth, tetgen or obj)")]
         public void A_bad_mesh_field_is_one_error_at_its_path(string mesh, string expected)
         {
             Assert.That(Errors(Scene(mesh)), Is.EqualTo(new[] { expected }));
+        }
+
+        [TestCase(null, "six")]
+        [TestCase("six-mirrored", "six-mirrored")]
+        [TestCase("five", "five")]
+        public void A_box_split_is_read_and_saved_back(string? split, string expected)
+        {
+            string field = split == null ? "" : $", \"split\": \"{split}\"";
+            SceneDocument doc = SceneFile.Parse(Scene("{ \"type\": \"box\", \"size\": [1, 1, 1], \"cells\": [2, 2, 2]" + field + " }"));
+            Assert.That(((SceneSoftBox)doc.SoftBodies[0].Mesh!).Split, Is.EqualTo(expected));
+            string saved = SceneFile.Save(doc);
+            Assert.That(((SceneSoftBox)SceneFile.Parse(saved).SoftBodies[0].Mesh!).Split, Is.EqualTo(expected));
+            if (split == null) Assert.That(saved, Does.Not.Contain("split"), "the default is left out");
         }
 
         [Test]

@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
 using System.Numerics;
 using Fulcrum.SoftBodies;
 using NUnit.Framework;
@@ -35,6 +37,7 @@ namespace Fulcrum.Tests.SoftBodies
 
         [TestCase(TetSplit.Six, 6)]
         [TestCase(TetSplit.Five, 5)]
+        [TestCase(TetSplit.SixMirrored, 6)]
         public void Box_is_split_into_positive_tets_that_fill_it(TetSplit split, int perCell)
         {
             SoftMesh mesh = SoftMesh.Box(new Vector3(1, 2, 3), 2, 3, 4, split);
@@ -46,6 +49,33 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(enclosed, Is.EqualTo(6f).Within(1e-3f));
             Assert.That(mesh.SurfaceTriangles.Length / 3, Is.EqualTo(2 * 2 * (2 * 3 + 3 * 4 + 2 * 4)), "two triangles per boundary cell face: the faces match up inside");
             Assert.That(mesh.Center, Is.EqualTo(Vector3.Zero));
+        }
+
+        // Six leans: every tet of every cell holds the cell's (0,0,0)-(1,1,1) diagonal. Mirrored,
+        // the edges along a diagonal direction come in all four directions equally.
+        [TestCase(TetSplit.Six, false)]
+        [TestCase(TetSplit.SixMirrored, true)]
+        public void A_mirrored_split_has_its_cell_diagonals_in_every_direction(TetSplit split, bool balanced)
+        {
+            SoftMesh mesh = SoftMesh.Box(new Vector3(4), 4, 4, 4, split);
+            var count = new Dictionary<Vector3, int>();
+            var edges = new HashSet<(int, int)>();
+            for (int t = 0; t < mesh.TetrahedronCount; t++)
+                for (int p = 0; p < 4; p++)
+                    for (int q = p + 1; q < 4; q++)
+                    {
+                        int a = mesh.Tetrahedra[4 * t + p], b = mesh.Tetrahedra[4 * t + q];
+                        if (!edges.Add((Math.Min(a, b), Math.Max(a, b)))) continue;
+                        Vector3 e = mesh.Vertices[b] - mesh.Vertices[a];
+                        if (MathF.Abs(MathF.Abs(e.X) - 1) > 1e-4f || MathF.Abs(MathF.Abs(e.Y) - 1) > 1e-4f || MathF.Abs(MathF.Abs(e.Z) - 1) > 1e-4f) continue;
+                        if (e.X < 0) e = -e; // a line, not a direction
+                        Vector3 key = new Vector3(MathF.Sign(e.X), MathF.Sign(e.Y), MathF.Sign(e.Z));
+                        count[key] = count.TryGetValue(key, out int c) ? c + 1 : 1;
+                    }
+            TestContext.Out.WriteLine($"{split}: " + string.Join(", ", count.Select(kv => $"{kv.Key} {kv.Value}")));
+            Assert.That(count.Values.Sum(), Is.EqualTo(64), "one body diagonal a cell");
+            if (balanced) Assert.That(count.Values, Has.Count.EqualTo(4).And.All.EqualTo(16));
+            else Assert.That(count.Values, Has.Count.EqualTo(1));
         }
 
         [Test]

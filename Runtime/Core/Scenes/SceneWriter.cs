@@ -196,7 +196,10 @@ namespace Fulcrum.Scenes
             var o = new Obj().Add("type", SceneNames.Of(mesh.Type));
             switch (mesh)
             {
-                case SceneSoftBox box: o.Add("size", box.Size).Add("cells", Ints(box.Cells)); break;
+                case SceneSoftBox box:
+                    o.Add("size", box.Size).Add("cells", Ints(box.Cells));
+                    if (box.Split != "six") o.Add("split", box.Split);
+                    break;
                 case SceneSoftSphere sphere: o.Add("radius", sphere.Radius).Add("cells", sphere.Cells); break;
                 case SceneSoftCapsule capsule: o.Add("radius", capsule.Radius).Add("halfHeight", capsule.HalfHeight).Add("cells", capsule.Cells); break;
                 case SceneSoftBeam beam: o.Add("length", beam.Length).Add("thickness", beam.Thickness).Add("cells", beam.Cells); break;

@@ -38,7 +38,7 @@ namespace Fulcrum.SoftBodies
                 for (int j = 0; j < sy; j++)
                     for (int i = 0; i < sx; i++)
                         vertices[i + sx * (j + sy * k)] = origin + new Vector3(i * cell.X, j * cell.Y, k * cell.Z);
-            int perCell = split == TetSplit.Six ? 6 : 5;
+            int perCell = split == TetSplit.Five ? 5 : 6;
             tets = new int[nx * ny * nz * perCell * 4];
             int t = 0;
             Span<int> corner = stackalloc int[8];
@@ -46,9 +46,14 @@ namespace Fulcrum.SoftBodies
                 for (int j = 0; j < ny; j++)
                     for (int i = 0; i < nx; i++)
                     {
+                        // Mirrored: odd cells along an axis take the corners flipped along it.
+                        int flip = split == TetSplit.SixMirrored ? (i & 1) | ((j & 1) << 1) | ((k & 1) << 2) : 0;
                         for (int c = 0; c < 8; c++)
-                            corner[c] = (i + (c & 1)) + sx * ((j + ((c >> 1) & 1)) + sy * (k + ((c >> 2) & 1)));
-                        int[] pattern = split == TetSplit.Six ? SixSplit : ((i + j + k) & 1) == 0 ? FiveSplitEven : FiveSplitOdd;
+                        {
+                            int m = c ^ flip;
+                            corner[c] = (i + (m & 1)) + sx * ((j + ((m >> 1) & 1)) + sy * (k + ((m >> 2) & 1)));
+                        }
+                        int[] pattern = split != TetSplit.Five ? SixSplit : ((i + j + k) & 1) == 0 ? FiveSplitEven : FiveSplitOdd;
                         for (int p = 0; p < pattern.Length; p += 4)
                         {
                             tets[t] = corner[pattern[p]];

@@ -91,7 +91,7 @@ namespace Fulcrum.SoftBodies
             CheckCells(cellsX, "mesh.cells[0]");
             CheckCells(cellsY, "mesh.cells[1]");
             CheckCells(cellsZ, "mesh.cells[2]");
-            if (split != TetSplit.Six && split != TetSplit.Five) throw new ArgumentException($"mesh.split must be Six or Five, got {split}.", "mesh.split");
+            if (split != TetSplit.Six && split != TetSplit.Five && split != TetSplit.SixMirrored) throw new ArgumentException($"mesh.split must be Six, Five or SixMirrored, got {split}.", "mesh.split");
             GridTetGenerator.Box(size, cellsX, cellsY, cellsZ, split, out Vector3[] v, out int[] t);
             return Validated(v, t, Array.Empty<int>());
         }

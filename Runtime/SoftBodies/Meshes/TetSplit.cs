@@ -14,5 +14,14 @@ namespace Fulcrum.SoftBodies
         /// elements, but the central tet is twice the size of the others.
         /// </summary>
         Five = 1,
+        /// <summary>
+        /// Six tets around a main diagonal as in <see cref="Six"/>, with every other cell along
+        /// each axis mirrored across the face it shares with its neighbour (the reflected Kuhn
+        /// split): faces still match (a mirror fixes the shared face), and the mesh has no
+        /// preferred diagonal, so a load square to the grid gives a response square to it.
+        /// With <see cref="Six"/> every cell leans the same way and a body crushed straight down
+        /// shears along the diagonal.
+        /// </summary>
+        SixMirrored = 2,
     }
 }

@@ -72,6 +72,11 @@ namespace Fulcrum.Scenes
                 case SceneSoftMeshType.Box:
                     var box = new SceneSoftBox { Size = r.Vector("size", Vector3.Zero, required: true) };
                     if (r.Ints("cells", 3) is int[] cells) box.Cells = cells;
+                    if (r.String("split") is string split)
+                    {
+                        if (split == "six" || split == "six-mirrored" || split == "five") box.Split = split;
+                        else d.Add(JsonPath.Member(v.Path, "split"), $"unknown split '{split}' (expected six, six-mirrored or five)", v["split"]);
+                    }
                     mesh = box;
                     break;
                 case SceneSoftMeshType.Sphere:
