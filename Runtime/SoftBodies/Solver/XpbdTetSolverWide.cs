@@ -38,6 +38,7 @@ namespace Fulcrum.SoftBodies
             };
             var block = new Block();
             Vector256<float> floorTrigger = Vector256.Create(VolumeFloor.Trigger - 1f);
+            bool loaded = tets.Loaded; // the floor holds only a body something presses
             int e = start;
             for (; e + 8 <= end; e += 8)
             {
@@ -45,6 +46,7 @@ namespace Fulcrum.SoftBodies
                 uint write = Multipliers(ref block, k, tets, lambdas, keep, e);
                 if (write != 0) Correct(ref block, tets, x, xPrev, e, write);
                 // Lanes near the volume floor (J below its trigger before the projection), one by one.
+                if (!loaded) continue;
                 uint low = (Vector256.LessThan(block.CH, floorTrigger) & block.Active).ExtractMostSignificantBits();
                 while (low != 0)
                 {
