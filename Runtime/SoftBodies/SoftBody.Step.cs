@@ -37,7 +37,7 @@ namespace Fulcrum.SoftBodies
                 TetData.Pack(W, FreeW, M);
                 // The last step's end measured J on these very positions: with no tet inverted
                 // there is nothing to mark (the common case: one J pass per step, not two).
-                if (!_cleanEnd) _startLargestJ = VolumeFloor.BeginStep(TetData, X);
+                if (!_cleanEnd) _startLargestJ = VolumeFloor.Measure(TetData, X, mark: true, out _);
                 _cleanEnd = false;
                 // Pressed from outside: it may touch a rigid shape, or is attached to a body.
                 TetData.Loaded = Touching;
@@ -96,7 +96,7 @@ namespace Fulcrum.SoftBodies
         /// </summary>
         public const float MaxVolumeRatio = 10f;
 
-        // The largest |J| at the start of this step (VolumeFloor.BeginStep, or the last step's end).
+        // The largest |J| at the start of this step (VolumeFloor.Measure, here or at the last step's end).
         float _startLargestJ;
         // The last step ended with no tet inverted and nothing has moved a vertex since.
         bool _cleanEnd;
@@ -124,7 +124,7 @@ namespace Fulcrum.SoftBodies
             // an explosion, which otherwise ran on to 1e25 J of strain within the world bounds).
             if (!bad && Tets.Length > 0)
             {
-                float largest = VolumeFloor.LargestJ(TetData, X, out bool inverted);
+                float largest = VolumeFloor.Measure(TetData, X, mark: false, out bool inverted);
                 bad = _startLargestJ <= MaxVolumeRatio && !(largest <= MaxVolumeRatio);
                 if (!bad)
                 {

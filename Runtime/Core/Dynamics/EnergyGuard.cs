@@ -219,16 +219,7 @@ namespace Fulcrum.Dynamics
                 scaled = true;
                 Activations++;
             }
-            if (!scaled) return;
-            for (int k = 1; k < _count; k++)
-            {
-                ref SolverBody b = ref bodies[k];
-                if (b.IsDynamic == 0) continue;
-                float s = _scale[Find(k)];
-                if (s == 1f) continue;
-                b.LinearVelocity = _linear[k] + s * (b.LinearVelocity - _linear[k]);
-                b.AngularVelocity = _angular[k] + s * (b.AngularVelocity - _angular[k]);
-            }
+            if (scaled) Rescale(bodies, _linear, _angular);
         }
 
         /// <summary>Records the velocities after the solve, before the relax and restitution passes (contact-only islands; jointed ones are in <see cref="End"/>'s window).</summary>
@@ -294,17 +285,21 @@ namespace Fulcrum.Dynamics
                 scaled = true;
                 Activations++;
             }
-            if (!scaled) return;
+            if (scaled) Rescale(bodies, _solvedLinear, _solvedAngular);
+        }
+
+        // Takes every dynamic body of a scaled island back toward the recorded velocities by its
+        // island's factor: v = v0 + s (v - v0). Islands left alone have s = 1 and are untouched.
+        void Rescale(SolverBody[] bodies, Vector3[] linear, Vector3[] angular)
+        {
             for (int k = 1; k < _count; k++)
             {
                 ref SolverBody b = ref bodies[k];
                 if (b.IsDynamic == 0) continue;
-                int r = Find(k);
-                if (_exempt[r] || _jointed[r]) continue;
-                float s = _scale[r];
+                float s = _scale[Find(k)];
                 if (s == 1f) continue;
-                b.LinearVelocity = _solvedLinear[k] + s * (b.LinearVelocity - _solvedLinear[k]);
-                b.AngularVelocity = _solvedAngular[k] + s * (b.AngularVelocity - _solvedAngular[k]);
+                b.LinearVelocity = linear[k] + s * (b.LinearVelocity - linear[k]);
+                b.AngularVelocity = angular[k] + s * (b.AngularVelocity - angular[k]);
             }
         }
 

@@ -40,53 +40,35 @@ namespace Fulcrum.SoftBodies
         const int MaxSteps = 3;
 
         /// <summary>
-        /// Starts a step's marks (in <see cref="TetStream.Masses"/>' fourth value, which
-        /// <see cref="TetStream.Pack"/> clears): 1 on the vertices of every tet inverted
-        /// (J &lt;= 0) at the start of the step, for which the floor leaves the tets around them
-        /// alone, so that a body created or caught inside out turns back out through its
-        /// neighbours (held above the floor, they locked one inverted tet of a mirrored cube in
-        /// for good).
-        /// Returns the largest |J| of the body at the start of the step (see <see cref="LargestJ"/>).
+        /// The largest |J| of the body's tets (NaN when a position is not finite), and whether any
+        /// is inverted (J &lt;= 0). With <paramref name="mark"/> (at the start of a step) it also
+        /// marks (in <see cref="TetStream.Masses"/>' fourth value, which <see cref="TetStream.Pack"/>
+        /// clears) the vertices of every inverted tet: the floor leaves the tets around them alone,
+        /// so that a body created or caught inside out turns back out through its neighbours (held
+        /// above the floor, they locked one inverted tet of a mirrored cube in for good). Measured
+        /// at the end of a step with no tet inverted, the next step has nothing to mark.
         /// </summary>
-        public static float BeginStep(TetStream tets, Vector3[] x)
+        public static float Measure(TetStream tets, Vector3[] x, bool mark, out bool anyInverted)
         {
             int n = tets.Count;
             int[] vertices = tets.Vertices;
             Vector4[] masses = tets.Masses;
             float largest = 0f;
+            anyInverted = false;
             for (int e = 0; e < n; e++)
             {
                 int a = vertices[e], b = vertices[n + e], c = vertices[2 * n + e], d = vertices[3 * n + e];
                 float j = DeformationGradient.Of(x[a], x[b], x[c], x[d], XpbdTetSolver.RestInverse(tets, e)).Determinant;
-                largest = MathF.Max(largest, MathF.Abs(j));
-                if (j > 0f) continue;
-                masses[a].W = masses[b].W = masses[c].W = masses[d].W = 1f;
-            }
-            return largest;
-        }
-
-        /// <summary>
-        /// The largest |J| of the body's tets (NaN when a position is not finite), and whether
-        /// any is inverted (J &lt;= 0): when none is and nothing moves the vertices before the
-        /// next step, that step's <see cref="BeginStep"/> has nothing to mark and is skipped.
-        /// </summary>
-        public static float LargestJ(TetStream tets, Vector3[] x, out bool anyInverted)
-        {
-            int n = tets.Count;
-            int[] vertices = tets.Vertices;
-            float largest = 0f, smallest = float.MaxValue;
-            for (int e = 0; e < n; e++)
-            {
-                float j = DeformationGradient.Of(x[vertices[e]], x[vertices[n + e]], x[vertices[2 * n + e]], x[vertices[3 * n + e]], XpbdTetSolver.RestInverse(tets, e)).Determinant;
                 if (float.IsNaN(j))
                 {
                     anyInverted = true;
                     return float.NaN;
                 }
                 largest = MathF.Max(largest, MathF.Abs(j));
-                smallest = MathF.Min(smallest, j);
+                if (j > 0f) continue;
+                anyInverted = true;
+                if (mark) masses[a].W = masses[b].W = masses[c].W = masses[d].W = 1f;
             }
-            anyInverted = smallest <= 0f;
             return largest;
         }
 
@@ -94,7 +76,7 @@ namespace Fulcrum.SoftBodies
         /// The floor for tet <paramref name="e"/> after its elastic projection, in a body
         /// pressed from outside in this step (<see cref="TetStream.Loaded"/>: it may touch a rigid
         /// shape, or is attached to a body), unless a vertex is next to an inverted tet
-        /// (<see cref="BeginStep"/>). A body's own motion cannot crush it past what its energy
+        /// (<see cref="Measure"/>). A body's own motion cannot crush it past what its energy
         /// stores, a heavy body pressing on it can; and a one-way floor in a free body locks
         /// folds it must pass back through J = 0 to undo (a mirrored cube in zero gravity kept
         /// a tet at J = 0.1 and 94 % of its volume). The tet is moved along dJ/dx, weighted by
