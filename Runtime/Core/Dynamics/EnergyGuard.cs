@@ -30,6 +30,13 @@ namespace Fulcrum.Dynamics
     /// guard off the ordinary Gauss-Seidel error of chains holding heavy loads.
     /// </para>
     /// <para>
+    /// Under TGS the window spans the position integration, which turns the bodies: a free
+    /// body keeps its angular momentum, so its world angular velocity turns too. For a body
+    /// that turned, the start velocity is carried as momentum, w0' = I1^-1 I0 w0 (I0, I1 its
+    /// world inertia at the window's start and end), and the scaling is taken from there; if
+    /// the island still ends above the energy it began with, its rotation is scaled down to it.
+    /// </para>
+    /// <para>
     /// Islands of contacts alone are checked over what follows the solve: TGS's relax passes
     /// and the restitution passes. Neither may leave an island more kinetic energy than it had
     /// at the start of the (sub)step, or than the solve left it, whichever is more (a relax
@@ -60,6 +67,16 @@ namespace Fulcrum.Dynamics
         Vector3[] _solvedAngular = new Vector3[16];
         bool _anyAfterSolve;
         Mat3[] _inertia = new Mat3[16];
+        // Each body's world inverse inertia at Begin: TGS turns the bodies (and their world
+        // inertia) inside the window, and the guard must tell that turn from the constraints' change.
+        Mat3[] _beginInverse = new Mat3[16];
+        // Per island root: twice the kinetic energy at Begin (with the inertia of then), the
+        // factor on the rotation where a turn raised it, and whether a body turned.
+        double[] _begin = new double[16];
+        // Per island root: the rotational parts of _k00, _k01, _k11.
+        double[] _a00 = new double[16], _a01 = new double[16], _a11 = new double[16];
+        float[] _factor = new float[16];
+        bool[] _turned = new bool[16];
         // Per island root: sums of v0.M.v0, v0.M.dv, dv.M.dv and the mass.
         double[] _k00 = new double[16], _k01 = new double[16], _k11 = new double[16], _mass = new double[16], _work = new double[16];
         float[] _scale = new float[16];
@@ -143,6 +160,13 @@ namespace Fulcrum.Dynamics
             _solvedLinear = new Vector3[bodies];
             _solvedAngular = new Vector3[bodies];
             _inertia = new Mat3[bodies];
+            _beginInverse = new Mat3[bodies];
+            _begin = new double[bodies];
+            _a00 = new double[bodies];
+            _a01 = new double[bodies];
+            _a11 = new double[bodies];
+            _factor = new float[bodies];
+            _turned = new bool[bodies];
             _k00 = new double[bodies];
             _k01 = new double[bodies];
             _k11 = new double[bodies];
@@ -161,6 +185,7 @@ namespace Fulcrum.Dynamics
             {
                 _linear[k] = bodies[k].LinearVelocity;
                 _angular[k] = bodies[k].AngularVelocity;
+                _beginInverse[k] = bodies[k].InverseInertia;
             }
         }
 
@@ -174,8 +199,9 @@ namespace Fulcrum.Dynamics
             SolverBody[] bodies = c.Bodies;
             for (int k = 1; k < _count; k++)
             {
-                _k00[k] = _k01[k] = _k11[k] = _mass[k] = _work[k] = 0;
-                _scale[k] = 1f;
+                _k00[k] = _k01[k] = _k11[k] = _mass[k] = _work[k] = _begin[k] = _a00[k] = _a01[k] = _a11[k] = 0;
+                _scale[k] = _factor[k] = 1f;
+                _turned[k] = false;
             }
             // A motor may add at most its impulse times its target speed (it pushes towards
             // that speed and brakes beyond it).
@@ -197,25 +223,64 @@ namespace Fulcrum.Dynamics
                 if (_exempt[r] || !_jointed[r]) continue;
                 float m = 1f / b.InverseMass;
                 Vector3 v0 = _linear[k], w0 = _angular[k];
+                Mat3 inertia = _inertia[k];
+                Mat3 now = b.InverseInertia, then = _beginInverse[k];
+                double begin = m * Vector3.Dot(v0, v0) + Vector3.Dot(w0, inertia * w0);
+                if (now.C0 != then.C0 || now.C1 != then.C1 || now.C2 != then.C2)
+                {
+                    // The body turned in the window (TGS's position integration), and its world
+                    // angular velocity with it: a free body keeps its angular momentum L, not its
+                    // angular velocity. The constraints' change is measured (and scaled) from the
+                    // start momentum in the turned body, w0' = I1^-1 I0 w0, with the end inertia
+                    // I1. Taken back toward w0 itself in its turned pose, a 2.7 t rod spinning
+                    // about its long axis had the spin moved onto its heavy axes, 2.3 to 16 MJ in
+                    // three steps (WorldFuzz seed 1388).
+                    inertia = Inertia(b, now);
+                    Vector3 momentum = Inertia(b, then) * w0;
+                    begin = m * Vector3.Dot(v0, v0) + Vector3.Dot(w0, momentum);
+                    w0 = now * momentum;
+                    _angular[k] = w0;
+                    _turned[r] = true;
+                }
                 Vector3 dv = b.LinearVelocity - v0, dw = b.AngularVelocity - w0;
-                Vector3 iw0 = _inertia[k] * w0, idw = _inertia[k] * dw;
+                Vector3 iw0 = inertia * w0, idw = inertia * dw;
                 _k00[r] += m * Vector3.Dot(v0, v0) + Vector3.Dot(w0, iw0);
                 _k01[r] += m * Vector3.Dot(v0, dv) + Vector3.Dot(w0, idw);
                 _k11[r] += m * Vector3.Dot(dv, dv) + Vector3.Dot(dw, idw);
+                _begin[r] += begin;
+                _a00[r] += Vector3.Dot(w0, iw0);
+                _a01[r] += Vector3.Dot(w0, idw);
+                _a11[r] += Vector3.Dot(dw, idw);
                 _mass[r] += m;
             }
             bool scaled = false;
             for (int r = 1; r < _count; r++)
             {
                 if (_parent[r] != r || _exempt[r] || !_jointed[r] || _k11[r] <= 0) continue;
-                // 2 K(1) - 2 K(0) = 2 v0.M.dv + dv.M.dv
-                double rise = 2 * _k01[r] + _k11[r];
+                // 2 K(1) - 2 K(Begin) = 2 v0.M.dv + dv.M.dv, plus K(0) - K(Begin) where a body turned.
+                double offset = _turned[r] ? _k00[r] - _begin[r] : 0;
+                double rise = offset + 2 * _k01[r] + _k11[r];
                 double slack = RelativeSlack * _k00[r] + SlackPerKilogram * _mass[r] + _work[r];
                 if (!(rise > 2 * slack)) continue; // also skips a NaN sum (a singular inertia)
                 // Largest s with 2 s v0.M.dv + s^2 dv.M.dv <= 0 (0 when the change only adds).
                 double s = -2 * _k01[r] / _k11[r];
                 if (!(s > 0)) s = 0;
-                _scale[r] = (float)Math.Min(1, s);
+                s = Math.Min(1, s);
+                if (_turned[r])
+                {
+                    // Even at K(0) a turned island may hold more than it began with: its bodies
+                    // turned, under the solve's velocities, into a pose in which their start
+                    // momentum carries more energy. Then the rotation comes down to what the
+                    // island began with; the linear motion stays as scaled. Without this the
+                    // rod of seed 928 (5.4 t, held by contradictory joints to a 5 kg body) went
+                    // from 0.15 to 0.68 MJ in 12 steps with every solve scaled.
+                    double end = _k00[r] + 2 * s * _k01[r] + s * s * _k11[r];
+                    double angular = _a00[r] + 2 * s * _a01[r] + s * s * _a11[r];
+                    double room = _begin[r] + 2 * slack - (end - angular);
+                    if (end > _begin[r] + 2 * slack && angular > 0)
+                        _factor[r] = (float)Math.Sqrt(Math.Max(0, Math.Min(1, room / angular)));
+                }
+                _scale[r] = (float)s;
                 scaled = true;
                 Activations++;
             }
@@ -247,7 +312,7 @@ namespace Fulcrum.Dynamics
             for (int k = 1; k < _count; k++)
             {
                 _k00[k] = _k01[k] = _k11[k] = _mass[k] = _work[k] = 0;
-                _scale[k] = 1f;
+                _scale[k] = _factor[k] = 1f;
             }
             bool any = false;
             for (int k = 1; k < _count; k++)
@@ -296,12 +361,19 @@ namespace Fulcrum.Dynamics
             {
                 ref SolverBody b = ref bodies[k];
                 if (b.IsDynamic == 0) continue;
-                float s = _scale[Find(k)];
-                if (s == 1f) continue;
+                int r = Find(k);
+                float s = _scale[r], f = _factor[r];
+                if (s == 1f && f == 1f) continue;
                 b.LinearVelocity = linear[k] + s * (b.LinearVelocity - linear[k]);
                 b.AngularVelocity = angular[k] + s * (b.AngularVelocity - angular[k]);
+                if (f != 1f) b.AngularVelocity *= f;
             }
         }
+
+        // A body's world inertia from its world inverse inertia (on the free axes where rotation
+        // is locked: the pseudo-inverse the solver works with).
+        static Mat3 Inertia(in SolverBody b, in Mat3 inverse) =>
+            (b.Locks & AxisLocks.Angular) != 0 ? AxisLockMath.InverseOnFreeAxes(inverse) : inverse.Inverse();
 
         void Join(SolverContext c, int a, int b, bool active)
         {
