@@ -202,7 +202,7 @@ namespace Fulcrum.SoftBodies
             Array.Copy(X, _target, X.Length);
             for (int iteration = 0; iteration < Iterations; iteration++)
             {
-                NewtonSolver!.Step(this, _target, h);
+                NewtonSolver!.Step(this, _target, h, coupling);
                 if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
                 if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
                 // After the contacts, as the XPBD pass's floor comes after them: what a heavy body

@@ -184,10 +184,25 @@ namespace Fulcrum.SoftBodies
         {
             BodyStorage b = _bodies;
             if (b.Type[slot] != BodyType.Dynamic) return;
+            PushSum(slot, impulse, Vector3.Cross(point - b.Center[slot], impulse), h);
+        }
+
+        /// <summary>Adds a position impulse at <paramref name="point"/> to a sum about the body's centre (for one <see cref="PushSum"/> of the sum).</summary>
+        public void Accumulate(int slot, Vector3 point, Vector3 impulse, ref Vector3 linear, ref Vector3 angular)
+        {
+            linear += impulse;
+            angular += Vector3.Cross(point - _bodies.Center[slot], impulse);
+        }
+
+        /// <summary>Applies a position impulse <paramref name="linear"/> (kg m) and its moment about the centre <paramref name="angular"/> (kg m^2) to a dynamic body.</summary>
+        public void PushSum(int slot, Vector3 linear, Vector3 angular, float h)
+        {
+            BodyStorage b = _bodies;
+            if (b.Type[slot] != BodyType.Dynamic) return;
             int e = _entryOfSlot[slot];
             if (e < 0) return; // only tracked bodies are pushed (every candidate is tracked)
-            Vector3 dx = AxisLockMath.MaskLinear(impulse * b.InverseMass[slot], b.Locks[slot]);
-            Vector3 dTheta = b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], impulse);
+            Vector3 dx = AxisLockMath.MaskLinear(linear * b.InverseMass[slot], b.Locks[slot]);
+            Vector3 dTheta = b.InverseInertiaWorld[slot] * angular;
             float invH = 1f / h;
             Quaternion dq = Rotation.FromRotationVector(dTheta);
             b.Center[slot] += dx;

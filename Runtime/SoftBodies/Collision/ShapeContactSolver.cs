@@ -37,6 +37,9 @@ namespace Fulcrum.SoftBodies
         // vertices along the normal, see ImplicitNewtonSolver).
         Vector3[] _normal = Array.Empty<Vector3>();
         bool[] _holdNow = Array.Empty<bool>(), _holdLast = Array.Empty<bool>();
+        // Per vertex: 1 + the slot of the dynamic body the Newton solver's step met it against
+        // in this substep (0: none); see MetByNewton.
+        int[] _newtonOwner = Array.Empty<int>();
 
         /// <summary>Vertex-triangle pairs gathered against triangle meshes for this step.</summary>
         public int MeshPairCount => _meshes.Count;
@@ -158,9 +161,55 @@ namespace Fulcrum.SoftBodies
                 {
                     _pushed = new float[held.Length];
                     _held = new float[held.Length];
+                    _newtonOwner = new int[held.Length];
                 }
             };
         }
+
+        /// <summary>
+        /// The vertices within reach of a dynamic body's shape now, for the Newton solver's
+        /// coupled step (<see cref="ImplicitNewtonSolver"/>): per contact the vertex, the shape's
+        /// outward normal, the contact point and the body's slot. Fills the arrays up to their
+        /// length; returns how many.
+        /// </summary>
+        public int DynamicContacts(World world, SoftBody body, int[] vertex, Vector3[] normal, Vector3[] point, int[] owner, float[] friction)
+        {
+            ShapeStorage s = world.Shapes;
+            BodyStorage b = world.Bodies;
+            Vector3[] x = body.X;
+            float[] w = body.W;
+            float radius = body.CollisionRadius;
+            int count = 0;
+            for (int k = 0; k < _count; k++)
+            {
+                int shape = _shapes[k];
+                int slot = s.Body[shape];
+                if (b.Type[slot] != BodyType.Dynamic) continue;
+                Pose pose = world.ShapeWorldPose(shape);
+                ShapeGeometry geometry = s.Geometry[shape];
+                float mu = Combine.Values(body.Friction, s.FrictionCombine[shape], s.Friction[shape], s.FrictionCombine[shape]);
+                for (int i = 0; i < x.Length && count < vertex.Length; i++)
+                {
+                    if (w[i] == 0f) continue;
+                    if (!ShapeDistance.Query(geometry, pose, x[i], radius, out float distance, out Vector3 n)) continue;
+                    vertex[count] = i;
+                    normal[count] = n;
+                    point[count] = x[i] - n * distance;
+                    owner[count] = slot;
+                    friction[count] = mu;
+                    count++;
+                }
+            }
+            return count;
+        }
+
+        /// <summary>
+        /// Records that the Newton solver's step met vertex <paramref name="i"/> against the
+        /// dynamic body in <paramref name="slot"/> (normal and friction): the contact pass leaves
+        /// that pair alone in this substep.
+        /// </summary>
+        public void MetByNewton(int i, int slot) => _newtonOwner[i] = slot + 1;
+
 
         /// <summary>True (with its normal) when an immovable shape pushed vertex <paramref name="i"/> in this substep or the last.</summary>
         public bool Touches(int i, out Vector3 normal)
@@ -179,6 +228,7 @@ namespace Fulcrum.SoftBodies
                 _normal = new Vector3[vertexCount];
                 _holdNow = new bool[vertexCount];
                 _holdLast = new bool[vertexCount];
+                _newtonOwner = new int[vertexCount];
             }
             bool[] last = _holdLast;
             _holdLast = _holdNow;
@@ -186,6 +236,7 @@ namespace Fulcrum.SoftBodies
             Array.Clear(_holdNow, 0, vertexCount);
             Array.Clear(_pushed, 0, vertexCount);
             Array.Clear(_held, 0, vertexCount);
+            Array.Clear(_newtonOwner, 0, vertexCount);
         }
 
         /// <summary>
@@ -211,6 +262,11 @@ namespace Fulcrum.SoftBodies
                 {
                     float wi = w[i];
                     if (wi == 0f) continue;
+                    // A contact the Newton solver's step has met (added mass, with friction; see
+                    // ImplicitNewtonSolver) is not projected again: pushing the vertex alone
+                    // crushed a stiff slab under a dropped crate, pushing the body alone lifted a
+                    // resting plate onto its highest vertex. What overlap is left the next step meets.
+                    if (_newtonOwner[i] == owner + 1) continue;
                     if (!ShapeDistance.Query(geometry, pose, x[i], radius, out float distance, out Vector3 n)) continue;
                     Vector3 contact = x[i] - n * distance;
                     float wb = coupling.InverseMassAt(owner, contact, n);
