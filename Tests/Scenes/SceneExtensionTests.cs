@@ -36,17 +36,19 @@ namespace Fulcrum.Tests.Scenes
         [Test]
         public void Shock_and_joint_correction_fields_reach_the_world_settings_round_trip_and_name_their_paths()
         {
-            string text = Stiff.Replace("\"manifoldReuse\": 0.0005", "\"manifoldReuse\": 0.0005, \"shockPropagation\": false, \"shockDepth\": 0.004, \"maxJointCorrectionSpeed\": 2.5");
+            string text = Stiff.Replace("\"manifoldReuse\": 0.0005", "\"manifoldReuse\": 0.0005, \"shockPropagation\": false, \"shockDepth\": 0.004, \"jointTrees\": false, \"maxJointCorrectionSpeed\": 2.5");
             SceneDocument doc = SceneFile.Parse(text);
             WorldSettings s = SceneBuilder.Build(doc).World.Settings;
             Assert.That(s.ShockPropagation, Is.False);
+            Assert.That(s.JointTrees, Is.False);
             Assert.That(s.ShockDepth, Is.EqualTo(0.004f));
             Assert.That(s.MaxJointCorrectionSpeed, Is.EqualTo(2.5f));
             SceneDocument again = SceneFile.Parse(SceneFile.Save(doc));
             Assert.That(again.Solver.ShockPropagation, Is.False);
+            Assert.That(again.Solver.JointTrees, Is.False);
             Assert.That(again.Solver.ShockDepth, Is.EqualTo(0.004f));
             Assert.That(again.Solver.MaxJointCorrectionSpeed, Is.EqualTo(2.5f));
-            Assert.That(SceneFile.Save(SceneFile.Parse(SceneSamples.OneBall())), Does.Not.Contain("shock"), "absent fields stay absent");
+            Assert.That(SceneFile.Save(SceneFile.Parse(SceneSamples.OneBall())), Does.Not.Contain("shock").And.Not.Contain("jointTrees"), "absent fields stay absent");
             var e = Assert.Throws<SceneException>(() => SceneFile.Parse(text.Replace("\"shockDepth\": 0.004", "\"shockDepth\": -1")))!;
             Assert.That(e.Errors[0].Path, Is.EqualTo("$.solver.shockDepth"));
             e = Assert.Throws<SceneException>(() => SceneFile.Parse(text.Replace("\"maxJointCorrectionSpeed\": 2.5", "\"maxJointCorrectionSpeed\": 0")))!;

@@ -101,12 +101,15 @@ namespace Fulcrum.Tests.Solver
             return (w, load, start);
         }
 
-        // Soft joints sag in proportion to load / (effective mass x stiffness^2); the stiffness a
-        // substep supports grows with the substep rate, so the stretch falls as 1 / substeps^2.
-        [TestCase(4, 4, 0.035f)]
-        [TestCase(8, 1, 0.010f)]
-        [TestCase(16, 1, 0.0025f)]
-        public void Chain_of_ten_1kg_links_holds_a_100kg_weight(int substeps, int iterations, float maxStretchRatio)
+        // A joint row is a spring of JointHertz (here as stiff as the substep allows: a quarter of
+        // the substep rate) on the effective mass it holds. Solved as one block (joint trees) that
+        // mass is the tree's own, the load's, and the whole chain sags g / omega^2: 0.069, 0.017
+        // and 0.004 mm at 4, 8 and 16 substeps. Row by row it was the 1 kg link's: the chain
+        // stretched 3.5 %, 1 % and 0.25 % of its 5 m.
+        [TestCase(4, 4)]
+        [TestCase(8, 1)]
+        [TestCase(16, 1)]
+        public void Chain_of_ten_1kg_links_holds_a_100kg_weight(int substeps, int iterations)
         {
             WorldSettings s = WorldSettings.Default;
             s.Substeps = substeps;
@@ -122,9 +125,11 @@ namespace Fulcrum.Tests.Solver
             }
             float stretch = start.Y - w.GetBody(load).Position.Y;
             float speed = w.GetBody(load).LinearVelocity.Length();
-            TestContext.Out.WriteLine($"TGS {substeps}x{iterations}: stretch after 5 s {stretch * 1000:F1} mm ({stretch / 5f * 100:F2} % of 5 m; worst after 2 s {worst * 1000:F1} mm), load speed {speed:E1} m/s");
-            Assert.That(worst, Is.LessThan(maxStretchRatio * 5f));
-            Assert.That(stretch, Is.GreaterThan(0f));
+            TestContext.Out.WriteLine($"TGS {substeps}x{iterations}: stretch after 5 s {stretch * 1000:F3} mm ({stretch / 5f * 100:F4} % of 5 m; worst after 2 s {worst * 1000:F3} mm), load speed {speed:E1} m/s");
+            double omega = 2 * Math.PI * Math.Min(1000.0, 0.25 * 60 * substeps);
+            double expected = G / (omega * omega);
+            Assert.That(stretch, Is.EqualTo(expected).Within(0.15 * expected + 2e-6));
+            Assert.That(worst, Is.LessThan(2 * expected + 2e-6));
             Assert.That(speed, Is.LessThan(0.01f));
         }
 

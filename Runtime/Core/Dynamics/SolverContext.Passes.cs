@@ -46,6 +46,7 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public void IntegratePositions()
         {
+            _trees.Invalidate();
             _bodyJob.Positions = true;
             if (Pool != null) Pool.For(_bodyJob, 1, BodyCount, 4 * MinChunk);
             else _bodyJob.Execute(1, BodyCount);
@@ -120,14 +121,33 @@ namespace Fulcrum.Dynamics
         /// Applies the accumulated impulses of every constraint. The wide contacts also take their
         /// separations at the bodies' pose now, which the biased passes that follow read.
         /// </summary>
-        public void WarmStart() => RunColors(ColorPass.WarmStart);
+        public void WarmStart()
+        {
+            _trees.Invalidate();
+            RunColors(ColorPass.WarmStart);
+        }
 
         /// <summary>
         /// One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out)
         /// or not (relax). A biased pass takes the wide contacts' separations from the last
         /// <see cref="WarmStart"/>: the bodies must not have moved since.
         /// </summary>
-        public void Solve(bool useBias) => RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
+        public void Solve(bool useBias)
+        {
+            RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
+            // The joint trees' anchor rows, as one block after the sweep (block Gauss-Seidel).
+            if (_trees.DirectCount > 0) _trees.Solve(Bodies, _joints.Data, _jointParameters.Joint, useBias);
+        }
+
+        /// <summary>
+        /// Picks the joints whose anchor rows <see cref="Solve"/> solves exactly as trees
+        /// (<see cref="JointTreeSolver"/>); with <paramref name="enabled"/> false every joint's rows
+        /// stay in the Gauss-Seidel passes. After <see cref="Prepare"/>.
+        /// </summary>
+        public void BuildJointTrees(bool enabled) => _trees.Build(Bodies, BodyCount, _joints.Data, JointOrder, JointCount, _jointParameters.Joint, enabled);
+
+        /// <summary>Joints whose anchor rows the tree solve takes this step.</summary>
+        public int TreeJointCount => _trees.DirectCount;
 
         /// <summary>Restitution's free approach speeds from the velocities now (TGS, each substep; see ContactSolver.RecordImpact).</summary>
         public void RefreshApproach() => RunColors(ColorPass.Approach);

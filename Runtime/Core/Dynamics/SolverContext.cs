@@ -59,6 +59,7 @@ namespace Fulcrum.Dynamics
         readonly BodyJob _bodyJob;
         readonly GroupJob _groupJob;
         readonly ShockPropagation _shock = new ShockPropagation();
+        readonly JointTreeSolver _trees = new JointTreeSolver();
 
         // Contacts of each colour not taken by the wide path, by index into Contacts.
         int[] _scalarContacts = new int[16];

@@ -20,6 +20,7 @@ namespace Fulcrum.Dynamics
         {
             ref readonly WorldSettings s = ref context.Settings;
             context.Prepare(islands, wide: true);
+            context.BuildJointTrees(s.JointTrees);
             if (s.ShockPropagation) context.PrepareShock(islands);
             context.BuildGuard(islands);
             for (int sub = 0; sub < s.Substeps; sub++)

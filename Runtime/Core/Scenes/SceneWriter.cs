@@ -29,6 +29,7 @@ namespace Fulcrum.Scenes
             if (doc.Solver.ManifoldReuse is float reuse) solver.Add("manifoldReuse", reuse);
             if (doc.Solver.ShockPropagation is bool shock) solver.Add("shockPropagation", shock);
             if (doc.Solver.ShockDepth is float shockDepth) solver.Add("shockDepth", shockDepth);
+            if (doc.Solver.JointTrees is bool trees) solver.Add("jointTrees", trees);
             if (doc.Solver.MaxJointCorrectionSpeed is float jointSpeed) solver.Add("maxJointCorrectionSpeed", jointSpeed);
             o.Add("solver", solver.Value);
             if (doc.Materials.Count > 0)

@@ -87,6 +87,14 @@ namespace Fulcrum
         /// </summary>
         public float ShockDepth;
         /// <summary>
+        /// Joint trees (TGS): the anchor rows of ball, hinge, fixed and cone-twist joints that form
+        /// trees are solved exactly, as one block per iteration (Baraff's linear-time solve;
+        /// JointTreeSolver), so a heavy load on light links does not stretch them: a Gauss-Seidel
+        /// row is a spring on the light side's effective mass. Loops, locked bodies and the other
+        /// rows stay iterative. Default: true.
+        /// </summary>
+        public bool JointTrees;
+        /// <summary>
         /// Stiffness of joint rows (TGS), Hz; clamped to a quarter of the substep rate, where the
         /// soft step stays stable. Default: 60 Hz.
         /// </summary>
@@ -150,6 +158,7 @@ namespace Fulcrum
             ContactDampingRatio = 10f,
             ShockPropagation = true,
             ShockDepth = 0.002f,
+            JointTrees = true,
             JointHertz = 60f,
             JointDampingRatio = 5f,
             MaxJointCorrectionSpeed = 4f,

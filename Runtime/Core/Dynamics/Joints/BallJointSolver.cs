@@ -40,7 +40,7 @@ namespace Fulcrum.Dynamics
         {
             ref BallJointParts k = ref j.Parts.Ball;
             JointSolver.SolveFriction(j.FrictionTorque, ref k.FrictionImpulse, ref a, ref b, Vector3.Zero, p.H);
-            k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
+            if (!j.DirectPoint) k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -87,7 +87,7 @@ namespace Fulcrum.Dynamics
                 k.LowerLimit.SolveLimit(ref a, ref b, _twist + j.TwistAngle, p.Joint, p.InvH, useBias);
                 k.UpperLimit.SolveLimit(ref a, ref b, j.TwistAngle - _twist, p.Joint, p.InvH, useBias);
             }
-            k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
+            if (!j.DirectPoint) k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -46,7 +46,7 @@ namespace Fulcrum.Dynamics
         {
             ref FixedJointParts k = ref j.Parts.Fixed;
             k.Lock.Solve(ref a, ref b, _angle, p.Joint, useBias);
-            k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
+            if (!j.DirectPoint) k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

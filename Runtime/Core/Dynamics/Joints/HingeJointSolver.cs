@@ -117,7 +117,7 @@ namespace Fulcrum.Dynamics
             if (_upper) k.UpperLimit.SolveLimit(ref a, ref b, j.Upper - _angle, p.Joint, p.InvH, useBias);
             if (_swing) k.Swing.SolveEquality(ref a, ref b, _swingAngle, p.Joint, useBias);
             else k.Rotation.Solve(ref a, ref b, _u1, _u2, _e1, _e2, p.Joint, useBias);
-            k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
+            if (!j.DirectPoint) k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

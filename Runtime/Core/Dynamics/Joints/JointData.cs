@@ -50,6 +50,11 @@ namespace Fulcrum.Dynamics
         public Quaternion FrameA, FrameB;
         /// <summary>The (sub)step the impulses belong to, s.</summary>
         public float StepDt;
+        /// <summary>
+        /// The anchor rows are solved by <see cref="JointTreeSolver"/> this step: the Gauss-Seidel
+        /// velocity passes skip them (set every step by <see cref="JointTreeSolver.Build"/>).
+        /// </summary>
+        public bool DirectPoint;
 
         /// <summary>
         /// The kind's constraint parts with their accumulated impulses (kept from step to step

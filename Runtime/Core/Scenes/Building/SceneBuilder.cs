@@ -31,6 +31,7 @@ namespace Fulcrum.Scenes
             if (document.Solver.JointHertz is float jointHertz) settings.JointHertz = jointHertz;
             if (document.Solver.ManifoldReuse is float reuse) settings.ManifoldReuseDistance = reuse;
             if (document.Solver.ShockPropagation is bool shock) settings.ShockPropagation = shock;
+            if (document.Solver.JointTrees is bool trees) settings.JointTrees = trees;
             if (document.Solver.ShockDepth is float shockDepth) settings.ShockDepth = shockDepth;
             if (document.Solver.MaxJointCorrectionSpeed is float jointSpeed) settings.MaxJointCorrectionSpeed = jointSpeed;
 

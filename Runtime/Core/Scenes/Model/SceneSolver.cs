@@ -37,6 +37,13 @@ namespace Fulcrum.Scenes
         public bool? ShockPropagation { get; set; }
 
         /// <summary>
+        /// <c>jointTrees</c>: the TGS block solve of the anchor rows of joints that form trees, so a
+        /// heavy load on light links holds (<see cref="WorldSettings.JointTrees"/>; an extension).
+        /// Null: the default (on).
+        /// </summary>
+        public bool? JointTrees { get; set; }
+
+        /// <summary>
         /// <c>shockDepth</c>: the depth, m, past which the sweep stops a contact sinking
         /// (<see cref="WorldSettings.ShockDepth"/>; an extension), &gt;= 0. Null: the default (2 mm).
         /// </summary>

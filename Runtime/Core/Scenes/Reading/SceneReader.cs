@@ -49,6 +49,7 @@ namespace Fulcrum.Scenes
             s.ManifoldReuse = r.OptionalFloat("manifoldReuse");
             s.ShockPropagation = r.OptionalBool("shockPropagation");
             s.ShockDepth = r.OptionalFloat("shockDepth");
+            s.JointTrees = r.OptionalBool("jointTrees");
             s.MaxJointCorrectionSpeed = r.OptionalFloat("maxJointCorrectionSpeed");
             r.Finish();
             return s;

@@ -1,0 +1,509 @@
+using System;
+using System.Numerics;
+using Fulcrum.Mathematics;
+
+namespace Fulcrum.Dynamics
+{
+    /// <summary>
+    /// Solves the anchor rows (<see cref="PointConstraintPart"/>) of the step's joints exactly,
+    /// all at once, where the joints form trees: Baraff's linear-time direct solve ("Linear-Time
+    /// Dynamics using Lagrange Multipliers", SIGGRAPH 1996). A Gauss-Seidel row is a spring on
+    /// its own effective mass, the light side's, so a 1000 kg load under 1 kg links stretched
+    /// each joint 134 mm at the defaults; solved as one block the rows hold any mass ratio.
+    /// <para>
+    /// The system for the impulses lambda (on B; A gets the opposite) and the velocity changes dv
+    /// is the symmetric, sparse one
+    /// <code>
+    ///   [  M  -J^T ] [ dv     ]   [ 0          ]
+    ///   [ -J   0   ] [ lambda ] = [ J v + bias ]
+    /// </code>
+    /// with J v = vB + wB x rB - vA - wA x rA per joint (blocks [I, -[r]] with sign + for B, - for
+    /// A). Bodies (6x6 blocks M = diag(m, m, m, I)) and joints (3x3 blocks) are the nodes of a
+    /// graph that is a forest when the joints are: eliminated leaves first (block LDL^T in that
+    /// order), no block fills in, so the factorisation and each solve cost O(nodes). Static and
+    /// kinematic bodies are not nodes (infinite mass): a joint to one is a leaf of its body, and
+    /// since a leaf joint's block would be zero, such a joint is made the root of its tree; a
+    /// tree takes at most one of them.
+    /// </para>
+    /// <para>
+    /// Which joints: the anchor rows of ball, hinge, fixed and cone-twist joints between bodies
+    /// without axis locks, taken in solver order as long as they close no loop (through other
+    /// joints, or through the ground by a second anchor to a static body). The rest (a loop's
+    /// closing joint, a bridge's second anchor, every other row: rotation, limits, motors,
+    /// friction, springs) stay in the Gauss-Seidel passes, and the block is one more item of
+    /// those passes, solved after each sweep (block Gauss-Seidel). The rows are rigid; a biased
+    /// pass asks for the joint's soft bias velocity (biasRate C, capped at the correction speed)
+    /// and the relax pass for none, so an error is still pulled in at the soft rate. TGS only;
+    /// <see cref="WorldSettings.JointTrees"/> turns it off.
+    /// </para>
+    /// Factorised once per substep and again after the position update (the arms and the world
+    /// inertia change there); every pass reuses it. Double precision: the blocks mix 1 kg links
+    /// with 10 t loads. Arrays are kept between steps and grow only.
+    /// </summary>
+    internal sealed class JointTreeSolver
+    {
+        // Nodes. A body node holds its solver body index, a joint node its joint slot.
+        int[] _body = new int[16];
+        int[] _joint = new int[16];
+        int[] _parent = new int[16];
+        int[] _order = new int[16];
+        int _nodes;
+        // Per joint node: its body nodes on side A and B (-1: static or kinematic) and arms.
+        int[] _nodeA = new int[16], _nodeB = new int[16];
+        Vector3[] _armA = new Vector3[16], _armB = new Vector3[16], _gap = new Vector3[16];
+        Vector2[] _scale = new Vector2[16];
+        bool[] _leaf = new bool[16];
+        // Factor: D^-1 (6x6 per node), H_ip (the block to the parent, rows of i, 6x6 room) and L = D^-1 H_ip.
+        double[] _dinv = new double[16 * 36], _h = new double[16 * 36], _l = new double[16 * 36];
+        double[] _x = new double[16 * 6];
+        readonly double[] _scratch = new double[36], _work = new double[72];
+        // Build: union-find over solver bodies, per-body node and adjacency.
+        int[] _find = new int[16], _bodyNode = new int[16], _first = new int[16], _next = new int[32], _stack = new int[16];
+        bool[] _anchored = new bool[16];
+        int[] _direct = new int[16];
+        int _directCount;
+        bool _stale;
+
+        /// <summary>Joints whose anchor rows the block solves this step.</summary>
+        public int DirectCount => _directCount;
+
+        /// <summary>
+        /// Picks this step's tree joints (see the class) and marks them
+        /// (<see cref="JointData.DirectPoint"/>); clears every mark when <paramref name="enabled"/> is false.
+        /// </summary>
+        public void Build(SolverBody[] bodies, int bodyCount, JointData[] data, int[] jointOrder, int jointCount, in Softness soft, bool enabled)
+        {
+            _directCount = 0;
+            _nodes = 0;
+            for (int k = 0; k < jointCount; k++) data[jointOrder[k]].DirectPoint = false;
+            if (!enabled || jointCount == 0) return;
+            Grow(ref _find, bodyCount);
+            Grow(ref _bodyNode, bodyCount);
+            if (_anchored.Length < bodyCount) _anchored = new bool[Math.Max(bodyCount, 2 * _anchored.Length)];
+            Grow(ref _direct, jointCount);
+            for (int i = 0; i < bodyCount; i++)
+            {
+                _find[i] = i;
+                _anchored[i] = false;
+                _bodyNode[i] = -1;
+            }
+            for (int k = 0; k < jointCount; k++)
+            {
+                int slot = jointOrder[k];
+                ref JointData j = ref data[slot];
+                if (j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic) continue;
+                int a = j.SolverA, b = j.SolverB;
+                if (a < 0 || b < 0) continue;
+                bool dynA = Treeable(bodies[a], a, out bool lockedA), dynB = Treeable(bodies[b], b, out bool lockedB);
+                if (lockedA || lockedB || !(dynA || dynB)) continue;
+                // A joint further apart than its capped bias closes at full rate (created off its
+                // target) is pulled in by its own soft rows: as one block over the tree's true
+                // effective mass it lifted a 1.6 t body toward targets other joints contradict
+                // (WorldFuzz seed 69).
+                if (soft.BiasRate * (j.DeltaCenter + j.ArmB - j.ArmA).Length() > soft.MaxBias) continue;
+                if (dynA && dynB)
+                {
+                    int ra = Find(a), rb = Find(b);
+                    if (ra == rb || (_anchored[ra] && _anchored[rb])) continue;
+                    _find[ra] = rb;
+                    _anchored[rb] |= _anchored[ra];
+                }
+                else
+                {
+                    int r = Find(dynA ? a : b);
+                    if (_anchored[r]) continue;
+                    _anchored[r] = true;
+                }
+                j.DirectPoint = true;
+                _direct[_directCount++] = slot;
+            }
+            if (_directCount > 0) Arrange(bodies, data);
+        }
+
+        // A dynamic body with a mass and an invertible inertia; kinematic and static ones are
+        // not nodes (false); a locked dynamic body, or one whose inertia cannot be inverted,
+        // takes its joints out of the block (locked).
+        static bool Treeable(in SolverBody body, int index, out bool locked)
+        {
+            locked = false;
+            if (index == 0 || body.IsDynamic == 0) return false;
+            if (body.IsDynamic != 1 || !(body.InverseMass > 0)) { locked = true; return false; }
+            Mat3 ii = body.InverseInertia;
+            float det = Vector3.Dot(ii.C0, Vector3.Cross(ii.C1, ii.C2));
+            if (!(det > 0) || !float.IsFinite(det)) { locked = true; return false; }
+            return true;
+        }
+
+        int Find(int i)
+        {
+            while (_find[i] != i)
+            {
+                _find[i] = _find[_find[i]];
+                i = _find[i];
+            }
+            return i;
+        }
+
+        // Nodes, adjacency, a root per tree and the elimination order (reverse pre-order: every
+        // node after all of its descendants).
+        void Arrange(SolverBody[] bodies, JointData[] data)
+        {
+            int capacity = 3 * _directCount + 1;
+            Grow(ref _body, capacity);
+            Grow(ref _joint, capacity);
+            Grow(ref _parent, capacity);
+            Grow(ref _order, capacity);
+            Grow(ref _nodeA, capacity);
+            Grow(ref _nodeB, capacity);
+            Grow(ref _stack, capacity);
+            Grow(ref _first, capacity);
+            Grow(ref _next, 2 * capacity);
+            if (_armA.Length < capacity)
+            {
+                _armA = new Vector3[capacity];
+                _armB = new Vector3[capacity];
+                _gap = new Vector3[capacity];
+                _scale = new Vector2[capacity];
+                _leaf = new bool[capacity];
+            }
+            if (_dinv.Length < 36 * capacity)
+            {
+                _dinv = new double[36 * capacity];
+                _h = new double[36 * capacity];
+                _l = new double[36 * capacity];
+                _x = new double[6 * capacity];
+            }
+            int n = 0;
+            for (int k = 0; k < _directCount; k++)
+            {
+                ref JointData j = ref data[_direct[k]];
+                int jn = n++;
+                _body[jn] = -1;
+                _joint[jn] = _direct[k];
+                _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
+                _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
+            }
+            _nodes = n;
+            // Adjacency of body nodes: a linked list of (joint node) edges per body node.
+            for (int i = 0; i < n; i++) _parent[i] = -2;
+            for (int i = 0; i < n; i++) _first[i] = -1;
+            for (int i = 0; i < n; i++)
+            {
+                if (_joint[i] < 0) continue;
+                Link(_nodeA[i], i, 0);
+                Link(_nodeB[i], i, 1);
+            }
+            int visited = 0;
+            // Anchored joints first, as roots; then the bodies of trees without one.
+            for (int pass = 0; pass < 2; pass++)
+                for (int i = 0; i < n; i++)
+                {
+                    if (_parent[i] != -2) continue;
+                    bool anchoredJoint = _joint[i] >= 0 && (_nodeA[i] < 0 || _nodeB[i] < 0);
+                    if (pass == 0 ? !anchoredJoint : _joint[i] >= 0) continue;
+                    visited = Walk(i, visited);
+                }
+            // Reverse pre-order.
+            for (int i = 0; i < visited / 2; i++) (_order[i], _order[visited - 1 - i]) = (_order[visited - 1 - i], _order[i]);
+            _stale = true;
+        }
+
+        // The node of a dynamic body (made on first use); -1 for a static or kinematic one.
+        int BodyNode(SolverBody[] bodies, int solverBody, ref int n)
+        {
+            if (solverBody == 0 || bodies[solverBody].IsDynamic != 1) return -1;
+            int node = _bodyNode[solverBody];
+            if (node >= 0) return node;
+            _body[n] = solverBody;
+            _joint[n] = -1;
+            _bodyNode[solverBody] = n;
+            return n++;
+        }
+
+        void Link(int bodyNode, int jointNode, int side)
+        {
+            if (bodyNode < 0) return;
+            int e = 2 * jointNode + side;
+            _next[e] = _first[bodyNode];
+            _first[bodyNode] = e;
+        }
+
+        // Depth-first from root, writing the pre-order into _order from position at.
+        int Walk(int root, int at)
+        {
+            int top = 0;
+            _stack[top++] = root;
+            _parent[root] = -1;
+            while (top > 0)
+            {
+                int node = _stack[--top];
+                _order[at++] = node;
+                if (_joint[node] >= 0)
+                {
+                    Push(_nodeA[node], node, ref top);
+                    Push(_nodeB[node], node, ref top);
+                }
+                else
+                    for (int e = _first[node]; e >= 0; e = _next[e]) Push(e >> 1, node, ref top);
+            }
+            return at;
+        }
+
+        void Push(int node, int parent, ref int top)
+        {
+            if (node < 0 || _parent[node] != -2) return;
+            _parent[node] = parent;
+            _stack[top++] = node;
+        }
+
+        /// <summary>
+        /// One exact update of every tree's anchor rows from the bodies' velocities now: the
+        /// impulses are added to the rows' accumulated ones (warm start and reports read them)
+        /// and the velocity changes to the bodies. With <paramref name="useBias"/> each row asks
+        /// for the soft bias velocity of <paramref name="soft"/> toward its error.
+        /// </summary>
+        public void Solve(SolverBody[] bodies, JointData[] data, in Softness soft, bool useBias)
+        {
+            if (_nodes == 0) return;
+            if (_stale)
+            {
+                if (!Factor(bodies, data))
+                {
+                    // Not expected (a tree's system is nonsingular); the rows go back to Gauss-Seidel.
+                    for (int k = 0; k < _directCount; k++) data[_direct[k]].DirectPoint = false;
+                    _directCount = 0;
+                    _nodes = 0;
+                    return;
+                }
+                _stale = false;
+            }
+            double[] x = _x;
+            for (int i = 0; i < _nodes; i++)
+            {
+                int at = 6 * i;
+                if (_joint[i] < 0)
+                {
+                    for (int k = 0; k < 6; k++) x[at + k] = 0;
+                    continue;
+                }
+                ref JointData j = ref data[_joint[i]];
+                Vector3 jv = bodies[j.SolverB].PointVelocity(_armB[i]) - bodies[j.SolverA].PointVelocity(_armA[i]);
+                float massScale = 1, impulseScale = 0;
+                if (useBias) jv += soft.Bias(_gap[i], out massScale, out impulseScale);
+                _scale[i] = new Vector2(massScale, impulseScale);
+                x[at] = jv.X;
+                x[at + 1] = jv.Y;
+                x[at + 2] = jv.Z;
+            }
+            // Forward: z_i = D_i^-1 y_i, y_p -= H_ip^T z_i (children first).
+            double[] t = _scratch;
+            for (int n = 0; n < _nodes; n++)
+            {
+                int i = _order[n], d = Dim(i), at = 6 * i, m = 36 * i;
+                for (int r = 0; r < d; r++)
+                {
+                    double sum = 0;
+                    for (int c = 0; c < d; c++) sum += _dinv[m + 6 * r + c] * x[at + c];
+                    t[r] = sum;
+                }
+                for (int r = 0; r < d; r++) x[at + r] = t[r];
+                int p = _parent[i];
+                if (p < 0) continue;
+                int dp = Dim(p), ap = 6 * p;
+                for (int c = 0; c < dp; c++)
+                {
+                    double sum = 0;
+                    for (int k = 0; k < d; k++) sum += _h[m + 6 * k + c] * t[k];
+                    x[ap + c] -= sum;
+                }
+            }
+            // Backward: x_i = z_i - L_i x_p (parents first).
+            for (int n = _nodes - 1; n >= 0; n--)
+            {
+                int i = _order[n], p = _parent[i];
+                if (p < 0) continue;
+                int d = Dim(i), dp = Dim(p), at = 6 * i, ap = 6 * p, m = 36 * i;
+                for (int r = 0; r < d; r++)
+                {
+                    double sum = 0;
+                    for (int c = 0; c < dp; c++) sum += _l[m + 6 * r + c] * x[ap + c];
+                    x[at + r] -= sum;
+                }
+            }
+            // x holds the rigid impulses -A^-1 (J v + bias). The soft step scales them as a single
+            // row's: dLambda = massScale x - impulseScale lambda, so a biased row is a spring on the
+            // tree's true effective mass A^-1 (the load's, not the link's). Applied row by row.
+            for (int i = 0; i < _nodes; i++)
+            {
+                if (_joint[i] < 0) continue;
+                int at = 6 * i;
+                ref JointData j = ref data[_joint[i]];
+                ref PointConstraintPart point = ref Point(ref j);
+                Vector2 s = _scale[i];
+                Vector3 impulse = s.X * new Vector3((float)x[at], (float)x[at + 1], (float)x[at + 2]) - s.Y * point.Impulse;
+                point.Impulse += impulse;
+                ref SolverBody a = ref bodies[j.SolverA];
+                ref SolverBody b = ref bodies[j.SolverB];
+                if (a.IsDynamic != 0) a.ApplyImpulse(_armA[i], -impulse);
+                if (b.IsDynamic != 0) b.ApplyImpulse(_armB[i], impulse);
+            }
+        }
+
+        int Dim(int node) => _joint[node] >= 0 ? 3 : 6;
+
+        /// <summary>The anchor rows of a ball, hinge, fixed or cone-twist joint.</summary>
+        static ref PointConstraintPart Point(ref JointData j)
+        {
+            switch (j.Kind)
+            {
+                case JointKind.Ball: return ref j.Parts.Ball.Point;
+                case JointKind.Hinge: return ref j.Parts.Hinge.Point;
+                case JointKind.Fixed: return ref j.Parts.Fixed.Point;
+                default: return ref j.Parts.ConeTwist.Point;
+            }
+        }
+
+        // Block LDL^T in elimination order: D_i = H_ii - sum over children c of H_ci^T D_c^-1 H_ci,
+        // L_i = D_i^-1 H_ip. Blocks are 6x6 slots (stride 6) holding d x d or d x dp entries.
+        bool Factor(SolverBody[] bodies, JointData[] data)
+        {
+            double[] dm = _dinv;
+            for (int i = 0; i < _nodes; i++)
+            {
+                int m = 36 * i;
+                for (int k = 0; k < 36; k++) dm[m + k] = 0;
+                if (_joint[i] >= 0)
+                {
+                    ref JointData j = ref data[_joint[i]];
+                    var g = new JointGeometry(j, bodies[j.SolverA], bodies[j.SolverB]);
+                    _armA[i] = g.ArmA;
+                    _armB[i] = g.ArmB;
+                    _gap[i] = g.Gap;
+                    continue;
+                }
+                ref SolverBody body = ref bodies[_body[i]];
+                _leaf[i] = true;
+                double mass = 1.0 / body.InverseMass;
+                dm[m] = dm[m + 7] = dm[m + 14] = mass;
+                if (!Invert3(body.InverseInertia, dm, m + 21)) return false;
+            }
+            for (int i = 0; i < _nodes; i++)
+                if (_parent[i] >= 0) _leaf[_parent[i]] = false;
+            for (int n = 0; n < _nodes; n++)
+            {
+                int i = _order[n], d = Dim(i), m = 36 * i;
+                if (_joint[i] < 0 && _leaf[i])
+                {
+                    // A body with no children: D = M, whose inverse the solver body holds.
+                    ref SolverBody body = ref bodies[_body[i]];
+                    for (int k = 0; k < 36; k++) dm[m + k] = 0;
+                    dm[m] = dm[m + 7] = dm[m + 14] = body.InverseMass;
+                    Mat3 ii = body.InverseInertia;
+                    dm[m + 21] = ii.C0.X; dm[m + 22] = ii.C1.X; dm[m + 23] = ii.C2.X;
+                    dm[m + 27] = ii.C0.Y; dm[m + 28] = ii.C1.Y; dm[m + 29] = ii.C2.Y;
+                    dm[m + 33] = ii.C0.Z; dm[m + 34] = ii.C1.Z; dm[m + 35] = ii.C2.Z;
+                }
+                else if (!Invert(dm, m, d)) return false;
+                int p = _parent[i];
+                if (p < 0) continue;
+                int dp = Dim(p), mp = 36 * p;
+                double[] h = _h;
+                for (int k = 0; k < 36; k++) h[m + k] = 0;
+                if (_joint[i] >= 0) MinusJacobian(i, p, h, m, transpose: false);
+                else MinusJacobian(p, i, h, m, transpose: true);
+                // L_i = D_i^-1 H_ip; D_p -= H_ip^T L_i.
+                for (int r = 0; r < d; r++)
+                    for (int c = 0; c < dp; c++)
+                    {
+                        double sum = 0;
+                        for (int k = 0; k < d; k++) sum += dm[m + 6 * r + k] * h[m + 6 * k + c];
+                        _l[m + 6 * r + c] = sum;
+                    }
+                for (int r = 0; r < dp; r++)
+                    for (int c = 0; c < dp; c++)
+                    {
+                        double sum = 0;
+                        for (int k = 0; k < d; k++) sum += h[m + 6 * k + r] * _l[m + 6 * k + c];
+                        dm[mp + 6 * r + c] -= sum;
+                    }
+            }
+            return true;
+        }
+
+        // -J of joint node j against body node b: -s [I, -[r]] = [-s I, s [r]], s = +1 on B's side,
+        // -1 on A's ([r] w = r x w). Written as a 3x6 block, or transposed as 6x3, at h[at] (stride 6).
+        void MinusJacobian(int j, int b, double[] h, int at, bool transpose)
+        {
+            bool sideB = _nodeB[j] == b;
+            double s = sideB ? 1 : -1;
+            Vector3 r = sideB ? _armB[j] : _armA[j];
+            Span<double> block = stackalloc double[18];
+            block[0] = -s; block[7] = -s; block[14] = -s;
+            // s [r]: rows [0, -rz, ry], [rz, 0, -rx], [-ry, rx, 0] in columns 3..5.
+            block[4] = -s * r.Z; block[5] = s * r.Y;
+            block[9] = s * r.Z; block[11] = -s * r.X;
+            block[15] = -s * r.Y; block[16] = s * r.X;
+            for (int row = 0; row < 3; row++)
+                for (int col = 0; col < 6; col++)
+                {
+                    double v = block[6 * row + col];
+                    if (transpose) h[at + 6 * col + row] = v;
+                    else h[at + 6 * row + col] = v;
+                }
+        }
+
+        // The inverse of a 3x3 (float) into the 3x3 corner at m[at] (stride 6), in double.
+        static bool Invert3(in Mat3 a, double[] m, int at)
+        {
+            double a00 = a.C0.X, a01 = a.C1.X, a02 = a.C2.X;
+            double a10 = a.C0.Y, a11 = a.C1.Y, a12 = a.C2.Y;
+            double a20 = a.C0.Z, a21 = a.C1.Z, a22 = a.C2.Z;
+            double c00 = a11 * a22 - a12 * a21, c01 = a02 * a21 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+            double det = a00 * c00 + a10 * c01 + a20 * c02;
+            if (!(Math.Abs(det) > 0) || double.IsInfinity(det)) return false;
+            double inv = 1.0 / det;
+            m[at] = c00 * inv; m[at + 1] = c01 * inv; m[at + 2] = c02 * inv;
+            m[at + 6] = (a12 * a20 - a10 * a22) * inv; m[at + 7] = (a00 * a22 - a02 * a20) * inv; m[at + 8] = (a02 * a10 - a00 * a12) * inv;
+            m[at + 12] = (a10 * a21 - a11 * a20) * inv; m[at + 13] = (a01 * a20 - a00 * a21) * inv; m[at + 14] = (a00 * a11 - a01 * a10) * inv;
+            return true;
+        }
+
+        // In-place inverse of the d x d block at m[at] (stride 6): Gauss-Jordan with partial pivoting.
+        bool Invert(double[] m, int at, int d)
+        {
+            double[] w = _work;
+            for (int r = 0; r < d; r++)
+                for (int c = 0; c < 2 * d; c++) w[12 * r + c] = c < d ? m[at + 6 * r + c] : (c - d == r ? 1 : 0);
+            for (int c = 0; c < d; c++)
+            {
+                int pivot = c;
+                for (int r = c + 1; r < d; r++)
+                    if (Math.Abs(w[12 * r + c]) > Math.Abs(w[12 * pivot + c])) pivot = r;
+                double v = w[12 * pivot + c];
+                if (!(Math.Abs(v) > 1e-300) || double.IsInfinity(v)) return false;
+                if (pivot != c)
+                    for (int k = 0; k < 2 * d; k++) (w[12 * c + k], w[12 * pivot + k]) = (w[12 * pivot + k], w[12 * c + k]);
+                double inv = 1.0 / v;
+                for (int k = 0; k < 2 * d; k++) w[12 * c + k] *= inv;
+                for (int r = 0; r < d; r++)
+                {
+                    if (r == c) continue;
+                    double f = w[12 * r + c];
+                    if (f == 0) continue;
+                    for (int k = 0; k < 2 * d; k++) w[12 * r + k] -= f * w[12 * c + k];
+                }
+            }
+            for (int r = 0; r < d; r++)
+                for (int c = 0; c < d; c++) m[at + 6 * r + c] = w[12 * r + d + c];
+            return true;
+        }
+
+        /// <summary>Marks the factorisation stale: the bodies moved (arms, gaps and world inertias changed).</summary>
+        public void Invalidate() => _stale = true;
+
+        static void Grow(ref int[] a, int n)
+        {
+            if (a.Length < n) a = new int[Math.Max(n, 2 * a.Length)];
+        }
+    }
+}
