@@ -46,6 +46,9 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public void IntegratePositions()
         {
+            // The joint trees' factorisation follows the arms and world inertias: once per
+            // position update (and once at the start of the step), for the relax pass and the
+            // next substep's biased passes alike.
             _trees.Invalidate();
             _bodyJob.Positions = true;
             if (Pool != null) Pool.For(_bodyJob, 1, BodyCount, 4 * MinChunk);
@@ -121,11 +124,7 @@ namespace Fulcrum.Dynamics
         /// Applies the accumulated impulses of every constraint. The wide contacts also take their
         /// separations at the bodies' pose now, which the biased passes that follow read.
         /// </summary>
-        public void WarmStart()
-        {
-            _trees.Invalidate();
-            RunColors(ColorPass.WarmStart);
-        }
+        public void WarmStart() => RunColors(ColorPass.WarmStart);
 
         /// <summary>
         /// One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out)

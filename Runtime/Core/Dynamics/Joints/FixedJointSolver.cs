@@ -45,7 +45,7 @@ namespace Fulcrum.Dynamics
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref FixedJointParts k = ref j.Parts.Fixed;
-            k.Lock.Solve(ref a, ref b, _angle, p.Joint, useBias);
+            if (!j.DirectRotation) k.Lock.Solve(ref a, ref b, _angle, p.Joint, useBias);
             if (!j.DirectPoint) k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }
 

@@ -55,6 +55,11 @@ namespace Fulcrum.Dynamics
         /// velocity passes skip them (set every step by <see cref="JointTreeSolver.Build"/>).
         /// </summary>
         public bool DirectPoint;
+        /// <summary>
+        /// The rotation rows of a fixed or hinge joint are solved by <see cref="JointTreeSolver"/>
+        /// this step (set with <see cref="DirectPoint"/>).
+        /// </summary>
+        public bool DirectRotation;
 
         /// <summary>
         /// The kind's constraint parts with their accumulated impulses (kept from step to step

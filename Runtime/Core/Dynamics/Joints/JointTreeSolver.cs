@@ -28,22 +28,27 @@ namespace Fulcrum.Dynamics
     /// <para>
     /// Which joints: the anchor rows of ball, hinge, fixed and cone-twist joints between bodies
     /// without axis locks, taken in solver order as long as they close no loop (through other
-    /// joints, or through the ground by a second anchor to a static body). The rest (a loop's
-    /// closing joint, a bridge's second anchor, every other row: rotation, limits, motors,
-    /// friction, springs) stay in the Gauss-Seidel passes, and the block is one more item of
-    /// those passes, solved after each sweep (block Gauss-Seidel). The rows are rigid; a biased
-    /// pass asks for the joint's soft bias velocity (biasRate C, capped at the correction speed)
-    /// and the relax pass for none, so an error is still pulled in at the soft rate. TGS only;
-    /// <see cref="WorldSettings.JointTrees"/> turns it off.
+    /// joints, or through the ground by a second anchor to a static body), and with them the
+    /// rotation rows of welds (three, J = [0, ±I]) and hinges (two, J = [0, ±u]) near their
+    /// target. A joint further apart than its capped bias closes at full rate keeps its rows
+    /// (it is being pulled in). The rest (a loop's closing joint, a bridge's second anchor,
+    /// limits, motors, cone and twist limits, friction, springs) stay in the Gauss-Seidel
+    /// passes, and the block is one more item of those passes, solved after each sweep (block
+    /// Gauss-Seidel). The solve gives the rigid impulses x = -A^-1 (J v + bias); each row then
+    /// takes the soft step's coefficients, dLambda = massScale x - impulseScale lambda, so a
+    /// biased row is a spring of JointHertz on the tree's true effective mass (a chain sags
+    /// g / omega^2 whatever it holds) and a violated joint is pulled in at the soft rate, capped
+    /// at the correction speed. TGS only; <see cref="WorldSettings.JointTrees"/> turns it off.
     /// </para>
-    /// Factorised once per substep and again after the position update (the arms and the world
-    /// inertia change there); every pass reuses it. Double precision: the blocks mix 1 kg links
-    /// with 10 t loads. Arrays are kept between steps and grow only.
+    /// Factorised at the start of the step and after each position update (the arms and the
+    /// world inertias change there only); every pass in between reuses it. Double precision:
+    /// the blocks mix 1 kg links with 1e6 kg loads. Arrays are kept between steps and grow only.
     /// </summary>
     internal sealed class JointTreeSolver
     {
         // Nodes. A body node holds its solver body index, a joint node its joint slot.
         int[] _body = new int[16];
+        int[] _dim = new int[16];
         int[] _joint = new int[16];
         int[] _parent = new int[16];
         int[] _order = new int[16];
@@ -51,7 +56,12 @@ namespace Fulcrum.Dynamics
         // Per joint node: its body nodes on side A and B (-1: static or kinematic) and arms.
         int[] _nodeA = new int[16], _nodeB = new int[16];
         Vector3[] _armA = new Vector3[16], _armB = new Vector3[16], _gap = new Vector3[16];
-        Vector2[] _scale = new Vector2[16];
+        // Per joint node: its rotation rows (0 none, Fixed 3 about the world axes, Hinge 2 about
+        // u1, u2), their axes and errors, and each row's soft scales (6 per node).
+        JointKind[] _rotation = new JointKind[16];
+        Vector3[] _axes = new Vector3[48];
+        Vector3[] _angle = new Vector3[16];
+        Vector2[] _scale = new Vector2[96];
         bool[] _leaf = new bool[16];
         // Factor: D^-1 (6x6 per node), H_ip (the block to the parent, rows of i, 6x6 room) and L = D^-1 H_ip.
         double[] _dinv = new double[16 * 36], _h = new double[16 * 36], _l = new double[16 * 36];
@@ -75,7 +85,11 @@ namespace Fulcrum.Dynamics
         {
             _directCount = 0;
             _nodes = 0;
-            for (int k = 0; k < jointCount; k++) data[jointOrder[k]].DirectPoint = false;
+            for (int k = 0; k < jointCount; k++)
+            {
+                data[jointOrder[k]].DirectPoint = false;
+                data[jointOrder[k]].DirectRotation = false;
+            }
             if (!enabled || jointCount == 0) return;
             Grow(ref _find, bodyCount);
             Grow(ref _bodyNode, bodyCount);
@@ -115,6 +129,15 @@ namespace Fulcrum.Dynamics
                     _anchored[r] = true;
                 }
                 j.DirectPoint = true;
+                // The rotation rows of a weld and of a hinge join the block when they are near
+                // their target (a hinge within its small-angle rows' range, well conditioned).
+                if (j.Kind == JointKind.Fixed)
+                    j.DirectRotation = soft.BiasRate * RotationLockPart.Error(j.FrameA, j.FrameB).Length() <= soft.MaxBias;
+                else if (j.Kind == JointKind.Hinge)
+                {
+                    HingeRows(j.FrameA, j.FrameB, out _, out _, out float e1, out float e2);
+                    j.DirectRotation = soft.BiasRate * MathF.Sqrt(e1 * e1 + e2 * e2) <= soft.MaxBias;
+                }
                 _direct[_directCount++] = slot;
             }
             if (_directCount > 0) Arrange(bodies, data);
@@ -157,13 +180,17 @@ namespace Fulcrum.Dynamics
             Grow(ref _nodeB, capacity);
             Grow(ref _stack, capacity);
             Grow(ref _first, capacity);
+            Grow(ref _dim, capacity);
             Grow(ref _next, 2 * capacity);
             if (_armA.Length < capacity)
             {
                 _armA = new Vector3[capacity];
                 _armB = new Vector3[capacity];
                 _gap = new Vector3[capacity];
-                _scale = new Vector2[capacity];
+                _scale = new Vector2[6 * capacity];
+                _rotation = new JointKind[capacity];
+                _axes = new Vector3[3 * capacity];
+                _angle = new Vector3[capacity];
                 _leaf = new bool[capacity];
             }
             if (_dinv.Length < 36 * capacity)
@@ -180,6 +207,8 @@ namespace Fulcrum.Dynamics
                 int jn = n++;
                 _body[jn] = -1;
                 _joint[jn] = _direct[k];
+                _rotation[jn] = j.DirectRotation ? j.Kind : JointKind.Ball;
+                _dim[jn] = j.DirectRotation ? (j.Kind == JointKind.Fixed ? 6 : 5) : 3;
                 _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
             }
@@ -216,6 +245,7 @@ namespace Fulcrum.Dynamics
             if (node >= 0) return node;
             _body[n] = solverBody;
             _joint[n] = -1;
+            _dim[n] = 6;
             _bodyNode[solverBody] = n;
             return n++;
         }
@@ -270,7 +300,7 @@ namespace Fulcrum.Dynamics
                 if (!Factor(bodies, data))
                 {
                     // Not expected (a tree's system is nonsingular); the rows go back to Gauss-Seidel.
-                    for (int k = 0; k < _directCount; k++) data[_direct[k]].DirectPoint = false;
+                    for (int k = 0; k < _directCount; k++) data[_direct[k]].DirectPoint = data[_direct[k]].DirectRotation = false;
                     _directCount = 0;
                     _nodes = 0;
                     return;
@@ -287,13 +317,34 @@ namespace Fulcrum.Dynamics
                     continue;
                 }
                 ref JointData j = ref data[_joint[i]];
-                Vector3 jv = bodies[j.SolverB].PointVelocity(_armB[i]) - bodies[j.SolverA].PointVelocity(_armA[i]);
+                ref SolverBody a = ref bodies[j.SolverA];
+                ref SolverBody b = ref bodies[j.SolverB];
+                Vector3 jv = b.PointVelocity(_armB[i]) - a.PointVelocity(_armA[i]);
                 float massScale = 1, impulseScale = 0;
                 if (useBias) jv += soft.Bias(_gap[i], out massScale, out impulseScale);
-                _scale[i] = new Vector2(massScale, impulseScale);
+                for (int r = 0; r < 3; r++) _scale[6 * i + r] = new Vector2(massScale, impulseScale);
                 x[at] = jv.X;
                 x[at + 1] = jv.Y;
                 x[at + 2] = jv.Z;
+                int rows = _dim[i] - 3;
+                if (rows == 0) continue;
+                // Rotation rows: J v = u . (wB - wA); the bias as the kind's own rows ask it (the
+                // error vector capped as one, so the cap keeps its direction).
+                Vector3 w = b.AngularVelocity - a.AngularVelocity;
+                Vector3 bias = Vector3.Zero;
+                massScale = 1;
+                impulseScale = 0;
+                if (useBias)
+                {
+                    Vector3 raw = soft.BiasRate * _angle[i];
+                    soft.Capped(raw.Length(), out float k, out massScale, out impulseScale);
+                    bias = k * raw;
+                }
+                for (int r = 0; r < rows; r++)
+                {
+                    x[at + 3 + r] = Vector3.Dot(_axes[3 * i + r], w) + (r == 0 ? bias.X : r == 1 ? bias.Y : bias.Z);
+                    _scale[6 * i + 3 + r] = new Vector2(massScale, impulseScale);
+                }
             }
             // Forward: z_i = D_i^-1 y_i, y_p -= H_ip^T z_i (children first).
             double[] t = _scratch;
@@ -339,17 +390,38 @@ namespace Fulcrum.Dynamics
                 int at = 6 * i;
                 ref JointData j = ref data[_joint[i]];
                 ref PointConstraintPart point = ref Point(ref j);
-                Vector2 s = _scale[i];
+                Vector2 s = _scale[6 * i];
                 Vector3 impulse = s.X * new Vector3((float)x[at], (float)x[at + 1], (float)x[at + 2]) - s.Y * point.Impulse;
                 point.Impulse += impulse;
                 ref SolverBody a = ref bodies[j.SolverA];
                 ref SolverBody b = ref bodies[j.SolverB];
                 if (a.IsDynamic != 0) a.ApplyImpulse(_armA[i], -impulse);
                 if (b.IsDynamic != 0) b.ApplyImpulse(_armB[i], impulse);
+                if (_dim[i] == 3) continue;
+                Vector3 l;
+                s = _scale[6 * i + 3];
+                if (_rotation[i] == JointKind.Fixed)
+                {
+                    ref RotationLockPart lockPart = ref j.Parts.Fixed.Lock;
+                    Vector3 d = s.X * new Vector3((float)x[at + 3], (float)x[at + 4], (float)x[at + 5]) - s.Y * lockPart.Impulse;
+                    lockPart.Impulse += d;
+                    l = d;
+                }
+                else
+                {
+                    ref HingeRotationPart hinge = ref j.Parts.Hinge.Rotation;
+                    float d1 = s.X * (float)x[at + 3] - s.Y * hinge.Impulse1;
+                    float d2 = s.X * (float)x[at + 4] - s.Y * hinge.Impulse2;
+                    hinge.Impulse1 += d1;
+                    hinge.Impulse2 += d2;
+                    l = d1 * _axes[3 * i] + d2 * _axes[3 * i + 1];
+                }
+                if (a.IsDynamic != 0) a.ApplyAngularImpulse(-l);
+                if (b.IsDynamic != 0) b.ApplyAngularImpulse(l);
             }
         }
 
-        int Dim(int node) => _joint[node] >= 0 ? 3 : 6;
+        int Dim(int node) => _dim[node];
 
         /// <summary>The anchor rows of a ball, hinge, fixed or cone-twist joint.</summary>
         static ref PointConstraintPart Point(ref JointData j)
@@ -379,6 +451,18 @@ namespace Fulcrum.Dynamics
                     _armA[i] = g.ArmA;
                     _armB[i] = g.ArmB;
                     _gap[i] = g.Gap;
+                    if (_rotation[i] == JointKind.Fixed)
+                    {
+                        _angle[i] = RotationLockPart.Error(g.FrameA, g.FrameB);
+                        _axes[3 * i] = Vector3.UnitX;
+                        _axes[3 * i + 1] = Vector3.UnitY;
+                        _axes[3 * i + 2] = Vector3.UnitZ;
+                    }
+                    else if (_rotation[i] == JointKind.Hinge)
+                    {
+                        HingeRows(g.FrameA, g.FrameB, out _axes[3 * i], out _axes[3 * i + 1], out float e1, out float e2);
+                        _angle[i] = new Vector3(e1, e2, 0);
+                    }
                     continue;
                 }
                 ref SolverBody body = ref bodies[_body[i]];
@@ -403,7 +487,7 @@ namespace Fulcrum.Dynamics
                     dm[m + 27] = ii.C0.Y; dm[m + 28] = ii.C1.Y; dm[m + 29] = ii.C2.Y;
                     dm[m + 33] = ii.C0.Z; dm[m + 34] = ii.C1.Z; dm[m + 35] = ii.C2.Z;
                 }
-                else if (!Invert(dm, m, d)) return false;
+                else if (!InvertDefinite(dm, m, d, _joint[i] >= 0 ? -1 : 1) && !Invert(dm, m, d)) return false;
                 int p = _parent[i];
                 if (p < 0) continue;
                 int dp = Dim(p), mp = 36 * p;
@@ -419,12 +503,14 @@ namespace Fulcrum.Dynamics
                         for (int k = 0; k < d; k++) sum += dm[m + 6 * r + k] * h[m + 6 * k + c];
                         _l[m + 6 * r + c] = sum;
                     }
+                // H^T D^-1 H is symmetric: the upper triangle, mirrored.
                 for (int r = 0; r < dp; r++)
-                    for (int c = 0; c < dp; c++)
+                    for (int c = r; c < dp; c++)
                     {
                         double sum = 0;
                         for (int k = 0; k < d; k++) sum += h[m + 6 * k + r] * _l[m + 6 * k + c];
                         dm[mp + 6 * r + c] -= sum;
+                        if (c != r) dm[mp + 6 * c + r] -= sum;
                     }
             }
             return true;
@@ -450,6 +536,33 @@ namespace Fulcrum.Dynamics
                     if (transpose) h[at + 6 * col + row] = v;
                     else h[at + 6 * row + col] = v;
                 }
+            // Rotation rows: -J = [0, -s u].
+            for (int row = 3; row < _dim[j]; row++)
+            {
+                Vector3 u = _axes[3 * j + row - 3];
+                for (int c = 0; c < 3; c++)
+                {
+                    double v = -s * (c == 0 ? u.X : c == 1 ? u.Y : u.Z);
+                    if (transpose) h[at + 6 * (3 + c) + row] = v;
+                    else h[at + 6 * row + 3 + c] = v;
+                }
+            }
+        }
+
+        /// <summary>
+        /// A hinge's two rotation rows (as <see cref="HingeJointSolver"/> builds them): with a1 the
+        /// axis in A's frame and b2, c2 B's frame axes across it, u1 = b2 x a1, u2 = c2 x a1 and the
+        /// errors a1.b2, a1.c2.
+        /// </summary>
+        static void HingeRows(Quaternion fA, Quaternion fB, out Vector3 u1, out Vector3 u2, out float e1, out float e2)
+        {
+            Vector3 axis = Vector3.Transform(Vector3.UnitX, fA);
+            Vector3 b2 = Vector3.Transform(Vector3.UnitY, fB);
+            Vector3 c2 = Vector3.Transform(Vector3.UnitZ, fB);
+            u1 = Vector3.Cross(b2, axis);
+            u2 = Vector3.Cross(c2, axis);
+            e1 = Vector3.Dot(axis, b2);
+            e2 = Vector3.Dot(axis, c2);
         }
 
         // The inverse of a 3x3 (float) into the 3x3 corner at m[at] (stride 6), in double.
@@ -465,6 +578,48 @@ namespace Fulcrum.Dynamics
             m[at] = c00 * inv; m[at + 1] = c01 * inv; m[at + 2] = c02 * inv;
             m[at + 6] = (a12 * a20 - a10 * a22) * inv; m[at + 7] = (a00 * a22 - a02 * a20) * inv; m[at + 8] = (a02 * a10 - a00 * a12) * inv;
             m[at + 12] = (a10 * a21 - a11 * a20) * inv; m[at + 13] = (a01 * a20 - a00 * a21) * inv; m[at + 14] = (a00 * a11 - a01 * a10) * inv;
+            return true;
+        }
+
+        // In-place inverse of the symmetric d x d block at m[at] (stride 6), positive definite
+        // times sign (a body's block is positive definite, a joint's negative): Cholesky
+        // sign D = L L^T, then D^-1 = sign L^-T L^-1. About a third of Gauss-Jordan's work; false
+        // (nothing written) when the block is not definite to working precision.
+        static bool InvertDefinite(double[] m, int at, int d, double sign)
+        {
+            Span<double> l = stackalloc double[36];
+            Span<double> li = stackalloc double[36];
+            for (int j = 0; j < d; j++)
+            {
+                double diag = sign * m[at + 7 * j];
+                for (int k = 0; k < j; k++) diag -= l[6 * j + k] * l[6 * j + k];
+                if (!(diag > 1e-300) || double.IsInfinity(diag)) return false;
+                double root = Math.Sqrt(diag);
+                l[7 * j] = root;
+                for (int i = j + 1; i < d; i++)
+                {
+                    double sum = sign * m[at + 6 * i + j];
+                    for (int k = 0; k < j; k++) sum -= l[6 * i + k] * l[6 * j + k];
+                    l[6 * i + j] = sum / root;
+                }
+            }
+            for (int j = 0; j < d; j++)
+            {
+                li[7 * j] = 1 / l[7 * j];
+                for (int i = j + 1; i < d; i++)
+                {
+                    double sum = 0;
+                    for (int k = j; k < i; k++) sum += l[6 * i + k] * li[6 * k + j];
+                    li[6 * i + j] = -sum / l[7 * i];
+                }
+            }
+            for (int r = 0; r < d; r++)
+                for (int c = r; c < d; c++)
+                {
+                    double sum = 0;
+                    for (int k = c; k < d; k++) sum += li[6 * k + r] * li[6 * k + c];
+                    m[at + 6 * r + c] = m[at + 6 * c + r] = sign * sum;
+                }
             return true;
         }
 
