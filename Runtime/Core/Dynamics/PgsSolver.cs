@@ -21,7 +21,7 @@ namespace Fulcrum.Dynamics
             BodyStorage bodies = context.Storage;
             Integrator.IntegrateVelocities(bodies, context.BodySlot, 1, context.BodyCount - 1, s.Gravity, dt, s.MaxLinearSpeed);
             context.Prepare(islands, wide: true, keepRows: true);
-            context.BuildJointTrees(false);
+            context.BuildJointTrees(s.JointTrees);
             context.BuildGuard(islands);
             context.Guard.Begin(context);
             context.WarmStart();

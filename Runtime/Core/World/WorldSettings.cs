@@ -87,11 +87,12 @@ namespace Fulcrum
         /// </summary>
         public float ShockDepth;
         /// <summary>
-        /// Joint trees (TGS): the anchor rows of ball, hinge, fixed and cone-twist joints that form
-        /// trees are solved exactly, as one block per iteration (Baraff's linear-time solve;
-        /// JointTreeSolver), so a heavy load on light links does not stretch them: a Gauss-Seidel
-        /// row is a spring on the light side's effective mass. Loops, locked bodies and the other
-        /// rows stay iterative. Default: true.
+        /// Joint trees (TGS, and PGS's velocity passes): the anchor rows of ball, hinge, fixed and
+        /// cone-twist joints that form trees (with the rotation rows of welds and hinges) are
+        /// solved exactly, as one block per
+        /// iteration (Baraff's linear-time solve; JointTreeSolver), so a heavy load on light links
+        /// does not stretch them: a Gauss-Seidel row is a spring on the light side's effective
+        /// mass. Loops, locked bodies and the other rows stay iterative. Default: true.
         /// </summary>
         public bool JointTrees;
         /// <summary>

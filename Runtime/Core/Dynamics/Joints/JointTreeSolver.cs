@@ -38,7 +38,8 @@ namespace Fulcrum.Dynamics
     /// takes the soft step's coefficients, dLambda = massScale x - impulseScale lambda, so a
     /// biased row is a spring of JointHertz on the tree's true effective mass (a chain sags
     /// g / omega^2 whatever it holds) and a violated joint is pulled in at the soft rate, capped
-    /// at the correction speed. TGS only; <see cref="WorldSettings.JointTrees"/> turns it off.
+    /// at the correction speed. TGS and PGS (its velocity passes, which have no bias; its position
+    /// passes stay row by row); <see cref="WorldSettings.JointTrees"/> turns it off.
     /// </para>
     /// Factorised at the start of the step and after each position update (the arms and the
     /// world inertias change there only); every pass in between reuses it. Double precision:

@@ -37,7 +37,7 @@ namespace Fulcrum.Scenes
         public bool? ShockPropagation { get; set; }
 
         /// <summary>
-        /// <c>jointTrees</c>: the TGS block solve of the anchor rows of joints that form trees, so a
+        /// <c>jointTrees</c>: the block solve (TGS; PGS's velocity passes) of the anchor rows of joints that form trees, so a
         /// heavy load on light links holds (<see cref="WorldSettings.JointTrees"/>; an extension).
         /// Null: the default (on).
         /// </summary>
