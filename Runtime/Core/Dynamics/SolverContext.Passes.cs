@@ -129,13 +129,15 @@ namespace Fulcrum.Dynamics
         /// <summary>
         /// One Gauss-Seidel pass over every constraint, colour by colour; biased (soft, pushing out)
         /// or not (relax). A biased pass takes the wide contacts' separations from the last
-        /// <see cref="WarmStart"/>: the bodies must not have moved since.
+        /// <see cref="WarmStart"/>: the bodies must not have moved since. With <paramref name="trees"/>
+        /// the joint trees' block (<see cref="JointTreeSolver"/>) is solved after the sweep.
         /// </summary>
-        public void Solve(bool useBias)
+        public void Solve(bool useBias, bool trees = true)
         {
             RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
-            // The joint trees' anchor rows, as one block after the sweep (block Gauss-Seidel).
-            if (_trees.DirectCount > 0) _trees.Solve(Bodies, _joints.Data, _jointParameters.Joint, useBias);
+            // The joint trees' rows, as one block after the sweep (block Gauss-Seidel), where the
+            // caller asks for it (TGS: the last biased sweep of a substep and the relax sweep).
+            if (trees && _trees.DirectCount > 0) _trees.Solve(Bodies, _joints.Data, _jointParameters.Joint, useBias);
         }
 
         /// <summary>

@@ -29,7 +29,7 @@ namespace Fulcrum.Dynamics
                 if (context.HasRestitution) context.RefreshApproach();
                 context.Guard.Begin(context);
                 context.WarmStart();
-                for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true);
+                for (int i = 0; i < s.Iterations; i++) context.Solve(useBias: true, trees: i == s.Iterations - 1);
                 if (s.ShockPropagation) context.Shock();
                 context.IntegratePositions();
                 context.Guard.BeginAfterSolve(context);
