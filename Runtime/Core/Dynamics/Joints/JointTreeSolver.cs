@@ -237,6 +237,10 @@ namespace Fulcrum.Dynamics
                 }
             // Reverse pre-order.
             for (int i = 0; i < visited / 2; i++) (_order[i], _order[visited - 1 - i]) = (_order[visited - 1 - i], _order[i]);
+            // Bodies with no children in their tree: D = M, and nothing to carry in the solves.
+            for (int i = 0; i < n; i++) _leaf[i] = _joint[i] < 0;
+            for (int i = 0; i < n; i++)
+                if (_parent[i] >= 0) _leaf[_parent[i]] = false;
             _stale = true;
         }
 
@@ -354,6 +358,7 @@ namespace Fulcrum.Dynamics
             for (int n = 0; n < _nodes; n++)
             {
                 int i = _order[n], d = Dim(i), at = 6 * i, m = 36 * i;
+                if (_leaf[i]) continue; // a childless body: y = 0, so z = 0 and nothing reaches its parent
                 for (int r = 0; r < d; r++)
                 {
                     double sum = 0;
@@ -468,14 +473,12 @@ namespace Fulcrum.Dynamics
                     }
                     continue;
                 }
+                if (_leaf[i]) continue; // D = M: its inverse is written below from the solver body
                 ref SolverBody body = ref bodies[_body[i]];
-                _leaf[i] = true;
                 double mass = 1.0 / body.InverseMass;
                 dm[m] = dm[m + 7] = dm[m + 14] = mass;
                 if (!Invert3(body.InverseInertia, dm, m + 21)) return false;
             }
-            for (int i = 0; i < _nodes; i++)
-                if (_parent[i] >= 0) _leaf[_parent[i]] = false;
             for (int n = 0; n < _nodes; n++)
             {
                 int i = _order[n], d = Dim(i), m = 36 * i;
