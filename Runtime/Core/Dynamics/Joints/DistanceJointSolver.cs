@@ -65,7 +65,7 @@ namespace Fulcrum.Dynamics
         public void Solve(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, in JointSolver.StepParameters p, bool useBias)
         {
             ref DistanceJointParts k = ref j.Parts.Distance;
-            if (_rigid) k.Length.SolveEquality(ref a, ref b, _length - j.MinLength, p.Joint, useBias);
+            if (_rigid && !j.DirectPoint) k.Length.SolveEquality(ref a, ref b, _length - j.MinLength, p.Joint, useBias);
             if (_spring) JointSolver.SolveSpring(ref k.Spring, ref a, ref b, _length - j.RestLength, j.SpringSoftness);
             if (_lower) k.LowerLimit.SolveLimit(ref a, ref b, _length - j.MinLength, p.Joint, p.InvH, useBias);
             if (_upper) k.UpperLimit.SolveLimit(ref a, ref b, j.MaxLength - _length, p.Joint, p.InvH, useBias);

@@ -51,8 +51,9 @@ namespace Fulcrum.Dynamics
         /// <summary>The (sub)step the impulses belong to, s.</summary>
         public float StepDt;
         /// <summary>
-        /// The anchor rows are solved by <see cref="JointTreeSolver"/> this step: the Gauss-Seidel
-        /// velocity passes skip them (set every step by <see cref="JointTreeSolver.Build"/>).
+        /// The anchor rows (a rigid distance joint's length row) are solved by
+        /// <see cref="JointTreeSolver"/> this step: the Gauss-Seidel velocity passes skip them (set
+        /// every step by <see cref="JointTreeSolver.Build"/>).
         /// </summary>
         public bool DirectPoint;
         /// <summary>

@@ -30,7 +30,7 @@ namespace Fulcrum.Dynamics
     /// without axis locks, taken in solver order as long as they close no loop (through other
     /// joints, or through the ground by a second anchor to a static body), and with them the
     /// rotation rows of welds (three, J = [0, ±I]) and hinges (two, J = [0, ±u]) near their
-    /// target. A joint further apart than its capped bias closes at full rate keeps its rows
+    /// target; a rigid distance joint (min = max) joins as its one length row, J = ±[n, r x n]. A joint further apart than its capped bias closes at full rate keeps its rows
     /// (it is being pulled in). The rest (a loop's closing joint, a bridge's second anchor,
     /// limits, motors, cone and twist limits, friction, springs) stay in the Gauss-Seidel
     /// passes, and the block is one more item of those passes (block Gauss-Seidel): solved after
@@ -108,7 +108,10 @@ namespace Fulcrum.Dynamics
             {
                 int slot = jointOrder[k];
                 ref JointData j = ref data[slot];
-                if (j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic) continue;
+                // A distance joint joins as its one length row when the length is rigid (min =
+                // max); a rope's limits are one-sided and stay row by row.
+                bool rod = j.Kind == JointKind.Distance;
+                if (j.Kind == JointKind.Prismatic || rod && j.MinLength != j.MaxLength) continue;
                 int a = j.SolverA, b = j.SolverB;
                 if (a < 0 || b < 0) continue;
                 bool dynA = Treeable(bodies[a], a, out bool lockedA), dynB = Treeable(bodies[b], b, out bool lockedB);
@@ -117,7 +120,9 @@ namespace Fulcrum.Dynamics
                 // target) is pulled in by its own soft rows: as one block over the tree's true
                 // effective mass it lifted a 1.6 t body toward targets other joints contradict
                 // (WorldFuzz seed 69).
-                if (soft.BiasRate * (j.DeltaCenter + j.ArmB - j.ArmA).Length() > soft.MaxBias) continue;
+                Vector3 gap = j.DeltaCenter + j.ArmB - j.ArmA;
+                float error = rod ? gap.Length() - j.MinLength : gap.Length();
+                if (soft.BiasRate * MathF.Abs(error) > soft.MaxBias) continue;
                 if (dynA && dynB)
                 {
                     int ra = Find(a), rb = Find(b);
@@ -210,8 +215,8 @@ namespace Fulcrum.Dynamics
                 int jn = n++;
                 _body[jn] = -1;
                 _joint[jn] = _direct[k];
-                _rotation[jn] = j.DirectRotation ? j.Kind : JointKind.Ball;
-                _dim[jn] = j.DirectRotation ? (j.Kind == JointKind.Fixed ? 6 : 5) : 3;
+                _rotation[jn] = j.Kind == JointKind.Distance || j.DirectRotation ? j.Kind : JointKind.Ball;
+                _dim[jn] = j.Kind == JointKind.Distance ? 1 : j.DirectRotation ? (j.Kind == JointKind.Fixed ? 6 : 5) : 3;
                 _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
             }
@@ -328,6 +333,15 @@ namespace Fulcrum.Dynamics
                 ref SolverBody b = ref bodies[j.SolverB];
                 Vector3 jv = b.PointVelocity(_armB[i]) - a.PointVelocity(_armA[i]);
                 float massScale = 1, impulseScale = 0;
+                if (_rotation[i] == JointKind.Distance)
+                {
+                    // The length row: J v = n . (the anchors' relative velocity), error |d| - L.
+                    float v = Vector3.Dot(_axes[3 * i], jv);
+                    if (useBias) v += soft.Bias(_angle[i].X, out massScale, out impulseScale);
+                    _scale[6 * i] = new Vector2(massScale, impulseScale);
+                    x[at] = v;
+                    continue;
+                }
                 if (useBias) jv += soft.Bias(_gap[i], out massScale, out impulseScale);
                 for (int r = 0; r < 3; r++) _scale[6 * i + r] = new Vector2(massScale, impulseScale);
                 x[at] = jv.X;
@@ -397,8 +411,18 @@ namespace Fulcrum.Dynamics
                 if (_joint[i] < 0) continue;
                 int at = 6 * i;
                 ref JointData j = ref data[_joint[i]];
-                ref PointConstraintPart point = ref Point(ref j);
                 Vector2 s = _scale[6 * i];
+                if (_rotation[i] == JointKind.Distance)
+                {
+                    ref AxisConstraintPart length = ref j.Parts.Distance.Length;
+                    float dl = s.X * (float)x[at] - s.Y * length.Impulse;
+                    length.Impulse += dl;
+                    Vector3 p = dl * _axes[3 * i];
+                    if (bodies[j.SolverA].IsDynamic != 0) bodies[j.SolverA].ApplyImpulse(_armA[i], -p);
+                    if (bodies[j.SolverB].IsDynamic != 0) bodies[j.SolverB].ApplyImpulse(_armB[i], p);
+                    continue;
+                }
+                ref PointConstraintPart point = ref Point(ref j);
                 Vector3 impulse = s.X * new Vector3((float)x[at], (float)x[at + 1], (float)x[at + 2]) - s.Y * point.Impulse;
                 point.Impulse += impulse;
                 ref SolverBody a = ref bodies[j.SolverA];
@@ -459,7 +483,14 @@ namespace Fulcrum.Dynamics
                     _armA[i] = g.ArmA;
                     _armB[i] = g.ArmB;
                     _gap[i] = g.Gap;
-                    if (_rotation[i] == JointKind.Fixed)
+                    if (_rotation[i] == JointKind.Distance)
+                    {
+                        // As DistanceJointSolver builds its row: along the anchors' line.
+                        float length = g.Gap.Length();
+                        _axes[3 * i] = length > 1e-6f ? g.Gap / length : Vector3.UnitY;
+                        _angle[i] = new Vector3(length - j.MinLength, 0, 0);
+                    }
+                    else if (_rotation[i] == JointKind.Fixed)
                     {
                         _angle[i] = RotationLockPart.Error(g.FrameA, g.FrameB);
                         _axes[3 * i] = Vector3.UnitX;
@@ -529,6 +560,18 @@ namespace Fulcrum.Dynamics
             bool sideB = _nodeB[j] == b;
             double s = sideB ? 1 : -1;
             Vector3 r = sideB ? _armB[j] : _armA[j];
+            if (_rotation[j] == JointKind.Distance)
+            {
+                // One row: -J = -s [n, r x n].
+                Vector3 n = _axes[3 * j], rn = Vector3.Cross(r, n);
+                for (int c = 0; c < 6; c++)
+                {
+                    double v = -s * (c == 0 ? n.X : c == 1 ? n.Y : c == 2 ? n.Z : c == 3 ? rn.X : c == 4 ? rn.Y : rn.Z);
+                    if (transpose) h[at + 6 * c] = v;
+                    else h[at + c] = v;
+                }
+                return;
+            }
             Span<double> block = stackalloc double[18];
             block[0] = -s; block[7] = -s; block[14] = -s;
             // s [r]: rows [0, -rz, ry], [rz, 0, -rx], [-ry, rx, 0] in columns 3..5.
