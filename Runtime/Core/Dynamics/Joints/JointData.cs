@@ -51,7 +51,8 @@ namespace Fulcrum.Dynamics
         /// <summary>The (sub)step the impulses belong to, s.</summary>
         public float StepDt;
         /// <summary>
-        /// The anchor rows (a rigid distance joint's length row) are solved by
+        /// The anchor rows (a rigid distance joint's length row, a prismatic joint's cross rows and
+        /// lock) are solved by
         /// <see cref="JointTreeSolver"/> this step: the Gauss-Seidel velocity passes skip them (set
         /// every step by <see cref="JointTreeSolver.Build"/>).
         /// </summary>

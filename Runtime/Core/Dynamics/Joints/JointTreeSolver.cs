@@ -30,7 +30,8 @@ namespace Fulcrum.Dynamics
     /// without axis locks, taken in solver order as long as they close no loop (through other
     /// joints, or through the ground by a second anchor to a static body), and with them the
     /// rotation rows of welds (three, J = [0, ±I]) and hinges (two, J = [0, ±u]) near their
-    /// target; a rigid distance joint (min = max) joins as its one length row, J = ±[n, r x n]. A joint further apart than its capped bias closes at full rate keeps its rows
+    /// target; a rigid distance joint (min = max) joins as its one length row, J = ±[n, r x n],
+    /// and a prismatic joint as its two rows across the slide axis and its rotation lock. A joint further apart than its capped bias closes at full rate keeps its rows
     /// (it is being pulled in). The rest (a loop's closing joint, a bridge's second anchor,
     /// limits, motors, cone and twist limits, friction, springs) stay in the Gauss-Seidel
     /// passes, and the block is one more item of those passes (block Gauss-Seidel): solved after
@@ -59,8 +60,10 @@ namespace Fulcrum.Dynamics
         // Per joint node: its body nodes on side A and B (-1: static or kinematic) and arms.
         int[] _nodeA = new int[16], _nodeB = new int[16];
         Vector3[] _armA = new Vector3[16], _armB = new Vector3[16], _gap = new Vector3[16];
-        // Per joint node: its rotation rows (0 none, Fixed 3 about the world axes, Hinge 2 about
-        // u1, u2), their axes and errors, and each row's soft scales (6 per node).
+        // Per joint node: which rows besides (or instead of) the anchor's (Ball: none; Fixed: 3
+        // about the world axes; Hinge: 2 about u1, u2; Distance: the length row alone; Prismatic:
+        // 2 across the slide axis and the 3 of the lock), their axes and errors, and each row's
+        // soft scales (6 per node).
         JointKind[] _rotation = new JointKind[16];
         Vector3[] _axes = new Vector3[48];
         Vector3[] _angle = new Vector3[16];
@@ -110,8 +113,8 @@ namespace Fulcrum.Dynamics
                 ref JointData j = ref data[slot];
                 // A distance joint joins as its one length row when the length is rigid (min =
                 // max); a rope's limits are one-sided and stay row by row.
-                bool rod = j.Kind == JointKind.Distance;
-                if (j.Kind == JointKind.Prismatic || rod && j.MinLength != j.MaxLength) continue;
+                bool rod = j.Kind == JointKind.Distance, slider = j.Kind == JointKind.Prismatic;
+                if (rod && j.MinLength != j.MaxLength) continue;
                 int a = j.SolverA, b = j.SolverB;
                 if (a < 0 || b < 0) continue;
                 bool dynA = Treeable(bodies[a], a, out bool lockedA), dynB = Treeable(bodies[b], b, out bool lockedB);
@@ -122,6 +125,12 @@ namespace Fulcrum.Dynamics
                 // (WorldFuzz seed 69).
                 Vector3 gap = j.DeltaCenter + j.ArmB - j.ArmA;
                 float error = rod ? gap.Length() - j.MinLength : gap.Length();
+                if (slider)
+                {
+                    // Across the slide axis and the rotation lock; sliding along it is free.
+                    SliderRows(j.FrameA, gap, out _, out _, out float c1, out float c2);
+                    error = MathF.Max(MathF.Sqrt(c1 * c1 + c2 * c2), RotationLockPart.Error(j.FrameA, j.FrameB).Length());
+                }
                 if (soft.BiasRate * MathF.Abs(error) > soft.MaxBias) continue;
                 if (dynA && dynB)
                 {
@@ -215,8 +224,8 @@ namespace Fulcrum.Dynamics
                 int jn = n++;
                 _body[jn] = -1;
                 _joint[jn] = _direct[k];
-                _rotation[jn] = j.Kind == JointKind.Distance || j.DirectRotation ? j.Kind : JointKind.Ball;
-                _dim[jn] = j.Kind == JointKind.Distance ? 1 : j.DirectRotation ? (j.Kind == JointKind.Fixed ? 6 : 5) : 3;
+                _rotation[jn] = j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic || j.DirectRotation ? j.Kind : JointKind.Ball;
+                _dim[jn] = j.Kind == JointKind.Distance ? 1 : j.Kind == JointKind.Prismatic ? 5 : j.DirectRotation ? (j.Kind == JointKind.Fixed ? 6 : 5) : 3;
                 _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
             }
@@ -333,6 +342,30 @@ namespace Fulcrum.Dynamics
                 ref SolverBody b = ref bodies[j.SolverB];
                 Vector3 jv = b.PointVelocity(_armB[i]) - a.PointVelocity(_armA[i]);
                 float massScale = 1, impulseScale = 0;
+                if (_rotation[i] == JointKind.Prismatic)
+                {
+                    // Two rows across the slide axis (A's arm reaching to B's anchor, as
+                    // PrismaticJointSolver sets them), each with its own bias, then the lock.
+                    Vector3 rel = b.PointVelocity(_armB[i]) - a.PointVelocity(_armA[i]);
+                    for (int r = 0; r < 2; r++)
+                    {
+                        float v = Vector3.Dot(_axes[3 * i + r], rel);
+                        massScale = 1;
+                        impulseScale = 0;
+                        if (useBias) v += soft.Bias(r == 0 ? _gap[i].X : _gap[i].Y, out massScale, out impulseScale);
+                        _scale[6 * i + r] = new Vector2(massScale, impulseScale);
+                        x[at + r] = v;
+                    }
+                    Vector3 wl = b.AngularVelocity - a.AngularVelocity;
+                    massScale = 1;
+                    impulseScale = 0;
+                    if (useBias) wl += soft.Bias(_angle[i], out massScale, out impulseScale);
+                    for (int r = 2; r < 5; r++) _scale[6 * i + r] = new Vector2(massScale, impulseScale);
+                    x[at + 2] = wl.X;
+                    x[at + 3] = wl.Y;
+                    x[at + 4] = wl.Z;
+                    continue;
+                }
                 if (_rotation[i] == JointKind.Distance)
                 {
                     // The length row: J v = n . (the anchors' relative velocity), error |d| - L.
@@ -412,6 +445,30 @@ namespace Fulcrum.Dynamics
                 int at = 6 * i;
                 ref JointData j = ref data[_joint[i]];
                 Vector2 s = _scale[6 * i];
+                if (_rotation[i] == JointKind.Prismatic)
+                {
+                    ref PrismaticJointParts slide = ref j.Parts.Prismatic;
+                    float d1 = s.X * (float)x[at] - s.Y * slide.Perp1.Impulse;
+                    Vector2 s2 = _scale[6 * i + 1];
+                    float d2 = s2.X * (float)x[at + 1] - s2.Y * slide.Perp2.Impulse;
+                    slide.Perp1.Impulse += d1;
+                    slide.Perp2.Impulse += d2;
+                    Vector3 across = d1 * _axes[3 * i] + d2 * _axes[3 * i + 1];
+                    Vector2 s3 = _scale[6 * i + 2];
+                    Vector3 turn = s3.X * new Vector3((float)x[at + 2], (float)x[at + 3], (float)x[at + 4]) - s3.Y * slide.Lock.Impulse;
+                    slide.Lock.Impulse += turn;
+                    if (bodies[j.SolverA].IsDynamic != 0)
+                    {
+                        bodies[j.SolverA].ApplyImpulse(_armA[i], -across);
+                        bodies[j.SolverA].ApplyAngularImpulse(-turn);
+                    }
+                    if (bodies[j.SolverB].IsDynamic != 0)
+                    {
+                        bodies[j.SolverB].ApplyImpulse(_armB[i], across);
+                        bodies[j.SolverB].ApplyAngularImpulse(turn);
+                    }
+                    continue;
+                }
                 if (_rotation[i] == JointKind.Distance)
                 {
                     ref AxisConstraintPart length = ref j.Parts.Distance.Length;
@@ -483,7 +540,14 @@ namespace Fulcrum.Dynamics
                     _armA[i] = g.ArmA;
                     _armB[i] = g.ArmB;
                     _gap[i] = g.Gap;
-                    if (_rotation[i] == JointKind.Distance)
+                    if (_rotation[i] == JointKind.Prismatic)
+                    {
+                        SliderRows(g.FrameA, g.Gap, out _axes[3 * i], out _axes[3 * i + 1], out float c1, out float c2);
+                        _armA[i] = g.ArmA + g.Gap; // the slide axis turns with A: A's arm reaches B's anchor
+                        _gap[i] = new Vector3(c1, c2, 0);
+                        _angle[i] = RotationLockPart.Error(g.FrameA, g.FrameB);
+                    }
+                    else if (_rotation[i] == JointKind.Distance)
                     {
                         // As DistanceJointSolver builds its row: along the anchors' line.
                         float length = g.Gap.Length();
@@ -560,6 +624,27 @@ namespace Fulcrum.Dynamics
             bool sideB = _nodeB[j] == b;
             double s = sideB ? 1 : -1;
             Vector3 r = sideB ? _armB[j] : _armA[j];
+            if (_rotation[j] == JointKind.Prismatic)
+            {
+                // Rows 0-1: -J = -s [p, r x p] across the slide axis; rows 2-4: -J = [0, -s e_k].
+                for (int row = 0; row < 2; row++)
+                {
+                    Vector3 pr = _axes[3 * j + row], rp = Vector3.Cross(r, pr);
+                    for (int c = 0; c < 6; c++)
+                    {
+                        double v = -s * (c == 0 ? pr.X : c == 1 ? pr.Y : c == 2 ? pr.Z : c == 3 ? rp.X : c == 4 ? rp.Y : rp.Z);
+                        if (transpose) h[at + 6 * c + row] = v;
+                        else h[at + 6 * row + c] = v;
+                    }
+                }
+                for (int k = 0; k < 3; k++)
+                {
+                    int row = 2 + k, c = 3 + k;
+                    if (transpose) h[at + 6 * c + row] = -s;
+                    else h[at + 6 * row + c] = -s;
+                }
+                return;
+            }
             if (_rotation[j] == JointKind.Distance)
             {
                 // One row: -J = -s [n, r x n].
@@ -596,6 +681,18 @@ namespace Fulcrum.Dynamics
                     else h[at + 6 * row + 3 + c] = v;
                 }
             }
+        }
+
+        /// <summary>
+        /// A prismatic joint's rows across its slide axis (as <see cref="PrismaticJointSolver"/>
+        /// builds them): A's frame y and z axes and the gap's components along them.
+        /// </summary>
+        static void SliderRows(Quaternion fA, Vector3 gap, out Vector3 p1, out Vector3 p2, out float c1, out float c2)
+        {
+            p1 = Vector3.Transform(Vector3.UnitY, fA);
+            p2 = Vector3.Transform(Vector3.UnitZ, fA);
+            c1 = Vector3.Dot(p1, gap);
+            c2 = Vector3.Dot(p2, gap);
         }
 
         /// <summary>

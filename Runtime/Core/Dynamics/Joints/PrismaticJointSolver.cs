@@ -84,6 +84,7 @@ namespace Fulcrum.Dynamics
             if (_motor) JointSolver.SolveMotor(ref k.Motor, ref a, ref b, j.MotorSpeed, j.MaxMotorForce * p.H);
             if (_lower) k.LowerLimit.SolveLimit(ref a, ref b, _x - j.Lower, p.Joint, p.InvH, useBias);
             if (_upper) k.UpperLimit.SolveLimit(ref a, ref b, j.Upper - _x, p.Joint, p.InvH, useBias);
+            if (j.DirectPoint) return; // the lock and the rows across the axis are in the joint trees' block
             k.Lock.Solve(ref a, ref b, _angle, p.Joint, useBias);
             k.Perp1.SolveEquality(ref a, ref b, _c1, p.Joint, useBias);
             k.Perp2.SolveEquality(ref a, ref b, _c2, p.Joint, useBias);
