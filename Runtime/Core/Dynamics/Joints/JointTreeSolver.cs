@@ -72,7 +72,7 @@ namespace Fulcrum.Dynamics
         // Factor: D^-1 (6x6 per node), H_ip (the block to the parent, rows of i, 6x6 room) and L = D^-1 H_ip.
         double[] _dinv = new double[16 * 36], _h = new double[16 * 36], _l = new double[16 * 36];
         double[] _x = new double[16 * 6];
-        readonly double[] _scratch = new double[36], _work = new double[72];
+        readonly double[] _scratch = new double[36];
         // Build: union-find over solver bodies, per-body node and adjacency.
         int[] _find = new int[16], _bodyNode = new int[16], _first = new int[16], _next = new int[32], _stack = new int[16];
         bool[] _anchored = new bool[16];
@@ -588,7 +588,7 @@ namespace Fulcrum.Dynamics
                     dm[m + 27] = ii.C0.Y; dm[m + 28] = ii.C1.Y; dm[m + 29] = ii.C2.Y;
                     dm[m + 33] = ii.C0.Z; dm[m + 34] = ii.C1.Z; dm[m + 35] = ii.C2.Z;
                 }
-                else if (!InvertDefinite(dm, m, d, _joint[i] >= 0 ? -1 : 1) && !Invert(dm, m, d)) return false;
+                else if (!InvertDefinite(dm, m, d, _joint[i] >= 0 ? -1 : 1)) return false;
                 int p = _parent[i];
                 if (p < 0) continue;
                 int dp = Dim(p), mp = 36 * p;
@@ -766,36 +766,6 @@ namespace Fulcrum.Dynamics
                     for (int k = c; k < d; k++) sum += li[6 * k + r] * li[6 * k + c];
                     m[at + 6 * r + c] = m[at + 6 * c + r] = sign * sum;
                 }
-            return true;
-        }
-
-        // In-place inverse of the d x d block at m[at] (stride 6): Gauss-Jordan with partial pivoting.
-        bool Invert(double[] m, int at, int d)
-        {
-            double[] w = _work;
-            for (int r = 0; r < d; r++)
-                for (int c = 0; c < 2 * d; c++) w[12 * r + c] = c < d ? m[at + 6 * r + c] : (c - d == r ? 1 : 0);
-            for (int c = 0; c < d; c++)
-            {
-                int pivot = c;
-                for (int r = c + 1; r < d; r++)
-                    if (Math.Abs(w[12 * r + c]) > Math.Abs(w[12 * pivot + c])) pivot = r;
-                double v = w[12 * pivot + c];
-                if (!(Math.Abs(v) > 1e-300) || double.IsInfinity(v)) return false;
-                if (pivot != c)
-                    for (int k = 0; k < 2 * d; k++) (w[12 * c + k], w[12 * pivot + k]) = (w[12 * pivot + k], w[12 * c + k]);
-                double inv = 1.0 / v;
-                for (int k = 0; k < 2 * d; k++) w[12 * c + k] *= inv;
-                for (int r = 0; r < d; r++)
-                {
-                    if (r == c) continue;
-                    double f = w[12 * r + c];
-                    if (f == 0) continue;
-                    for (int k = 0; k < 2 * d; k++) w[12 * r + k] -= f * w[12 * c + k];
-                }
-            }
-            for (int r = 0; r < d; r++)
-                for (int c = 0; c < d; c++) m[at + 6 * r + c] = w[12 * r + d + c];
             return true;
         }
 
