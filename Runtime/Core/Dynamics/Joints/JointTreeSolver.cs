@@ -36,7 +36,7 @@ namespace Fulcrum.Dynamics
     /// limits, motors, cone and twist limits, friction, springs) stay in the Gauss-Seidel
     /// passes, and the block is one more item of those passes (block Gauss-Seidel): solved after
     /// the last biased sweep of a TGS substep and after its relax sweep (after every sweep it cost
-    /// ragdolls 40 % more for the same results), and after every PGS velocity sweep (only after
+    /// ragdolls 40 % more, every test passing either way), and after every PGS velocity sweep (only after
     /// the last, a hinge's joint friction stopped holding: the block undid what it held). The solve gives the rigid impulses x = -A^-1 (J v + bias); each row then
     /// takes the soft step's coefficients, dLambda = massScale x - impulseScale lambda, so a
     /// biased row is a spring of JointHertz on the tree's true effective mass (a chain sags
