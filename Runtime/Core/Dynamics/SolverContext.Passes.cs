@@ -147,9 +147,6 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public void BuildJointTrees(bool enabled) => _trees.Build(Bodies, BodyCount, _joints.Data, JointOrder, JointCount, _jointParameters.Joint, enabled);
 
-        /// <summary>Joints whose anchor rows the tree solve takes this step.</summary>
-        public int TreeJointCount => _trees.DirectCount;
-
         /// <summary>Restitution's free approach speeds from the velocities now (TGS, each substep; see ContactSolver.RecordImpact).</summary>
         public void RefreshApproach() => RunColors(ColorPass.Approach);
 

@@ -60,13 +60,14 @@ namespace Fulcrum.Dynamics
         // Per joint node: its body nodes on side A and B (-1: static or kinematic) and arms.
         int[] _nodeA = new int[16], _nodeB = new int[16];
         Vector3[] _armA = new Vector3[16], _armB = new Vector3[16], _gap = new Vector3[16];
-        // Per joint node: which rows besides (or instead of) the anchor's (Ball: none; Fixed: 3
-        // about the world axes; Hinge: 2 about u1, u2; Distance: the length row alone; Prismatic:
-        // 2 across the slide axis and the 3 of the lock), their axes and errors, and each row's
+        // Per joint node: its row set, named by kind (Ball: the anchor's 3 alone; Fixed: and 3
+        // about the world axes; Hinge: and 2 about u1, u2; Distance: the length row alone;
+        // Prismatic: 2 across the slide axis and the 3 of the lock), their axes, the error of the
+        // rows after the anchor's (rotation vector, hinge errors, length error), and each row's
         // soft scales (6 per node).
-        JointKind[] _rotation = new JointKind[16];
+        JointKind[] _rows = new JointKind[16];
         Vector3[] _axes = new Vector3[48];
-        Vector3[] _angle = new Vector3[16];
+        Vector3[] _error = new Vector3[16];
         Vector2[] _scale = new Vector2[96];
         bool[] _leaf = new bool[16];
         // Factor: D^-1 (6x6 per node), H_ip (the block to the parent, rows of i, 6x6 room) and L = D^-1 H_ip.
@@ -205,9 +206,9 @@ namespace Fulcrum.Dynamics
                 _armB = new Vector3[capacity];
                 _gap = new Vector3[capacity];
                 _scale = new Vector2[6 * capacity];
-                _rotation = new JointKind[capacity];
+                _rows = new JointKind[capacity];
                 _axes = new Vector3[3 * capacity];
-                _angle = new Vector3[capacity];
+                _error = new Vector3[capacity];
                 _leaf = new bool[capacity];
             }
             if (_dinv.Length < 36 * capacity)
@@ -224,7 +225,7 @@ namespace Fulcrum.Dynamics
                 int jn = n++;
                 _body[jn] = -1;
                 _joint[jn] = _direct[k];
-                _rotation[jn] = j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic || j.DirectRotation ? j.Kind : JointKind.Ball;
+                _rows[jn] = j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic || j.DirectRotation ? j.Kind : JointKind.Ball;
                 _dim[jn] = j.Kind == JointKind.Distance ? 1 : j.Kind == JointKind.Prismatic ? 5 : j.DirectRotation ? (j.Kind == JointKind.Fixed ? 6 : 5) : 3;
                 _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
@@ -342,7 +343,7 @@ namespace Fulcrum.Dynamics
                 ref SolverBody b = ref bodies[j.SolverB];
                 Vector3 jv = b.PointVelocity(_armB[i]) - a.PointVelocity(_armA[i]);
                 float massScale = 1, impulseScale = 0;
-                if (_rotation[i] == JointKind.Prismatic)
+                if (_rows[i] == JointKind.Prismatic)
                 {
                     // Two rows across the slide axis (A's arm reaching to B's anchor, as
                     // PrismaticJointSolver sets them), each with its own bias, then the lock.
@@ -359,18 +360,18 @@ namespace Fulcrum.Dynamics
                     Vector3 wl = b.AngularVelocity - a.AngularVelocity;
                     massScale = 1;
                     impulseScale = 0;
-                    if (useBias) wl += soft.Bias(_angle[i], out massScale, out impulseScale);
+                    if (useBias) wl += soft.Bias(_error[i], out massScale, out impulseScale);
                     for (int r = 2; r < 5; r++) _scale[6 * i + r] = new Vector2(massScale, impulseScale);
                     x[at + 2] = wl.X;
                     x[at + 3] = wl.Y;
                     x[at + 4] = wl.Z;
                     continue;
                 }
-                if (_rotation[i] == JointKind.Distance)
+                if (_rows[i] == JointKind.Distance)
                 {
                     // The length row: J v = n . (the anchors' relative velocity), error |d| - L.
                     float v = Vector3.Dot(_axes[3 * i], jv);
-                    if (useBias) v += soft.Bias(_angle[i].X, out massScale, out impulseScale);
+                    if (useBias) v += soft.Bias(_error[i].X, out massScale, out impulseScale);
                     _scale[6 * i] = new Vector2(massScale, impulseScale);
                     x[at] = v;
                     continue;
@@ -390,7 +391,7 @@ namespace Fulcrum.Dynamics
                 impulseScale = 0;
                 if (useBias)
                 {
-                    Vector3 raw = soft.BiasRate * _angle[i];
+                    Vector3 raw = soft.BiasRate * _error[i];
                     soft.Capped(raw.Length(), out float k, out massScale, out impulseScale);
                     bias = k * raw;
                 }
@@ -445,7 +446,7 @@ namespace Fulcrum.Dynamics
                 int at = 6 * i;
                 ref JointData j = ref data[_joint[i]];
                 Vector2 s = _scale[6 * i];
-                if (_rotation[i] == JointKind.Prismatic)
+                if (_rows[i] == JointKind.Prismatic)
                 {
                     ref PrismaticJointParts slide = ref j.Parts.Prismatic;
                     float d1 = s.X * (float)x[at] - s.Y * slide.Perp1.Impulse;
@@ -469,7 +470,7 @@ namespace Fulcrum.Dynamics
                     }
                     continue;
                 }
-                if (_rotation[i] == JointKind.Distance)
+                if (_rows[i] == JointKind.Distance)
                 {
                     ref AxisConstraintPart length = ref j.Parts.Distance.Length;
                     float dl = s.X * (float)x[at] - s.Y * length.Impulse;
@@ -489,7 +490,7 @@ namespace Fulcrum.Dynamics
                 if (_dim[i] == 3) continue;
                 Vector3 l;
                 s = _scale[6 * i + 3];
-                if (_rotation[i] == JointKind.Fixed)
+                if (_rows[i] == JointKind.Fixed)
                 {
                     ref RotationLockPart lockPart = ref j.Parts.Fixed.Lock;
                     Vector3 d = s.X * new Vector3((float)x[at + 3], (float)x[at + 4], (float)x[at + 5]) - s.Y * lockPart.Impulse;
@@ -540,31 +541,31 @@ namespace Fulcrum.Dynamics
                     _armA[i] = g.ArmA;
                     _armB[i] = g.ArmB;
                     _gap[i] = g.Gap;
-                    if (_rotation[i] == JointKind.Prismatic)
+                    if (_rows[i] == JointKind.Prismatic)
                     {
                         SliderRows(g.FrameA, g.Gap, out _axes[3 * i], out _axes[3 * i + 1], out float c1, out float c2);
                         _armA[i] = g.ArmA + g.Gap; // the slide axis turns with A: A's arm reaches B's anchor
                         _gap[i] = new Vector3(c1, c2, 0);
-                        _angle[i] = RotationLockPart.Error(g.FrameA, g.FrameB);
+                        _error[i] = RotationLockPart.Error(g.FrameA, g.FrameB);
                     }
-                    else if (_rotation[i] == JointKind.Distance)
+                    else if (_rows[i] == JointKind.Distance)
                     {
                         // As DistanceJointSolver builds its row: along the anchors' line.
                         float length = g.Gap.Length();
                         _axes[3 * i] = length > 1e-6f ? g.Gap / length : Vector3.UnitY;
-                        _angle[i] = new Vector3(length - j.MinLength, 0, 0);
+                        _error[i] = new Vector3(length - j.MinLength, 0, 0);
                     }
-                    else if (_rotation[i] == JointKind.Fixed)
+                    else if (_rows[i] == JointKind.Fixed)
                     {
-                        _angle[i] = RotationLockPart.Error(g.FrameA, g.FrameB);
+                        _error[i] = RotationLockPart.Error(g.FrameA, g.FrameB);
                         _axes[3 * i] = Vector3.UnitX;
                         _axes[3 * i + 1] = Vector3.UnitY;
                         _axes[3 * i + 2] = Vector3.UnitZ;
                     }
-                    else if (_rotation[i] == JointKind.Hinge)
+                    else if (_rows[i] == JointKind.Hinge)
                     {
                         HingeRows(g.FrameA, g.FrameB, out _axes[3 * i], out _axes[3 * i + 1], out float e1, out float e2);
-                        _angle[i] = new Vector3(e1, e2, 0);
+                        _error[i] = new Vector3(e1, e2, 0);
                     }
                     continue;
                 }
@@ -624,7 +625,7 @@ namespace Fulcrum.Dynamics
             bool sideB = _nodeB[j] == b;
             double s = sideB ? 1 : -1;
             Vector3 r = sideB ? _armB[j] : _armA[j];
-            if (_rotation[j] == JointKind.Prismatic)
+            if (_rows[j] == JointKind.Prismatic)
             {
                 // Rows 0-1: -J = -s [p, r x p] across the slide axis; rows 2-4: -J = [0, -s e_k].
                 for (int row = 0; row < 2; row++)
@@ -645,7 +646,7 @@ namespace Fulcrum.Dynamics
                 }
                 return;
             }
-            if (_rotation[j] == JointKind.Distance)
+            if (_rows[j] == JointKind.Distance)
             {
                 // One row: -J = -s [n, r x n].
                 Vector3 n = _axes[3 * j], rn = Vector3.Cross(r, n);
