@@ -137,7 +137,7 @@ namespace Fulcrum.Dynamics
             RunColors(useBias ? ColorPass.Solve : ColorPass.Relax);
             // The joint trees' rows, as one block after the sweep (block Gauss-Seidel), where the
             // caller asks for it (TGS: the last biased sweep of a substep and the relax sweep).
-            if (trees && _trees.DirectCount > 0) _trees.Solve(Bodies, _joints.Data, _jointParameters.Joint, useBias);
+            if (trees && _trees.DirectCount > 0) _trees.Solve(Bodies, _joints.Data, _jointParameters.Joint, _jointParameters.H, useBias);
         }
 
         /// <summary>

@@ -68,7 +68,7 @@ namespace Fulcrum.Dynamics
             if (_rigid && !j.DirectPoint) k.Length.SolveEquality(ref a, ref b, _length - j.MinLength, p.Joint, useBias);
             if (_spring) JointSolver.SolveSpring(ref k.Spring, ref a, ref b, _length - j.RestLength, j.SpringSoftness);
             if (_lower) k.LowerLimit.SolveLimit(ref a, ref b, _length - j.MinLength, p.Joint, p.InvH, useBias);
-            if (_upper) k.UpperLimit.SolveLimit(ref a, ref b, j.MaxLength - _length, p.Joint, p.InvH, useBias);
+            if (_upper && !j.DirectPoint) k.UpperLimit.SolveLimit(ref a, ref b, j.MaxLength - _length, p.Joint, p.InvH, useBias);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
