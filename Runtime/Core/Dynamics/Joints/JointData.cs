@@ -62,6 +62,11 @@ namespace Fulcrum.Dynamics
         /// this step (set with <see cref="DirectPoint"/>).
         /// </summary>
         public bool DirectRotation;
+        /// <summary>
+        /// A hinge's limit row solved by <see cref="JointTreeSolver"/> this step: +1 the lower limit
+        /// it rests on, -1 the upper, 0 none (set with <see cref="DirectRotation"/>).
+        /// </summary>
+        public sbyte DirectLimit;
 
         /// <summary>
         /// The kind's constraint parts with their accumulated impulses (kept from step to step
