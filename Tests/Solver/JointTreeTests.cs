@@ -99,32 +99,19 @@ namespace Fulcrum.Tests.Solver
 
         // Five 1 kg links joined by rigid 0.1 m rods (distance joints with min = max), the first
         // hung from the world by a rod, a load on a rod at the end: the length rows join the block
-        // and the chain sags g / omega^2 whatever it holds. Measured: 0.069 mm for 10 kg to 1e6 kg;
-        // row by row (printed) 8.7 mm at 10 kg, 0.74 m at 1000 kg, and 1e6 kg fell 121 m.
+        // and the chain sags g / omega^2 whatever it holds. The same on ropes (min 0 < max =
+        // 0.1 m): hanging, every rope is pulled taut and its upper limit row joins the block, held
+        // at its maximum. Measured: 0.069 mm for 10 kg to 1e6 kg, rods and ropes; row by row
+        // (printed) 8.7 mm at 10 kg, 0.74 m (ropes 0.73 m) at 1000 kg, and 1e6 kg fell 121 m.
         [Test]
-        public void A_load_of_any_mass_on_links_joined_by_rigid_rods_sags_the_same_closed_form([Values(10f, 1000f, 1e6f)] float loadMass)
+        public void A_load_of_any_mass_on_links_joined_by_rigid_rods_or_taut_ropes_sags_the_same_closed_form(
+            [Values(false, true)] bool rope, [Values(10f, 1000f, 1e6f)] float loadMass)
         {
-            float trees = RodChain(loadMass, true, out float speed);
-            float rows = RodChain(loadMass, false, out _);
+            float trees = RodChain(loadMass, true, out float speed, rope);
+            float rows = RodChain(loadMass, false, out _, rope);
             double omega = 2 * Math.PI * 60;
             double expected = G / (omega * omega);
-            TestContext.Out.WriteLine($"rods, {loadMass:G} kg: chain sag {trees * 1000:F4} mm (g / omega^2 = {expected * 1000:F4} mm), row by row {rows * 1000:F1} mm; speed {speed:E1} m/s");
-            Assert.That(trees, Is.EqualTo(expected).Within(0.1 * expected));
-            Assert.That(speed, Is.LessThan(1e-3f));
-        }
-
-        // The same chain on ropes (distance joints with min 0 < max = 0.1 m): hanging, every rope
-        // is pulled taut and its upper limit row joins the block, held at its maximum. Measured:
-        // 0.069 mm for 10 kg to 1e6 kg; row by row (printed) 8.7 mm at 10 kg, 0.73 m at 1000 kg,
-        // and 1e5 kg fell 108 m.
-        [Test]
-        public void A_load_of_any_mass_on_links_joined_by_taut_ropes_sags_the_same_closed_form([Values(10f, 1000f, 1e6f)] float loadMass)
-        {
-            float trees = RodChain(loadMass, true, out float speed, rope: true);
-            float rows = RodChain(loadMass, false, out _, rope: true);
-            double omega = 2 * Math.PI * 60;
-            double expected = G / (omega * omega);
-            TestContext.Out.WriteLine($"ropes, {loadMass:G} kg: chain sag {trees * 1000:F4} mm (g / omega^2 = {expected * 1000:F4} mm), row by row {rows * 1000:F1} mm; speed {speed:E1} m/s");
+            TestContext.Out.WriteLine($"{(rope ? "ropes" : "rods")}, {loadMass:G} kg: chain sag {trees * 1000:F4} mm (g / omega^2 = {expected * 1000:F4} mm), row by row {rows * 1000:F1} mm; speed {speed:E1} m/s");
             Assert.That(trees, Is.EqualTo(expected).Within(0.1 * expected));
             Assert.That(speed, Is.LessThan(1e-3f));
         }
@@ -208,7 +195,7 @@ namespace Fulcrum.Tests.Solver
             Assert.That(lastSwing / startSwing, Is.GreaterThan(0.85f), "the swing is kept, but for the damping of the implicit rows");
         }
 
-        static float RodChain(float loadMass, bool trees, out float speed, bool rope = false)
+        static float RodChain(float loadMass, bool trees, out float speed, bool rope)
         {
             WorldSettings s = WorldSettings.Default;
             s.EnableSleeping = false;
@@ -397,7 +384,10 @@ namespace Fulcrum.Tests.Solver
             Assert.That(speed, Is.LessThan(1e-3f));
         }
 
-        static float Cantilever(JointKind kind, float loadMass, bool trees, out float speed)
+        // A 1 kg link 0.5 m long held out level from the world and a load held at its far end: by
+        // welds, by hinges about the vertical, or (stop = +1 / -1) by a hinge about +z / -z resting
+        // on its lower / upper limit at 0 with the load welded on.
+        static float Cantilever(JointKind kind, float loadMass, bool trees, out float speed, int stop = 0)
         {
             WorldSettings s = WorldSettings.Default;
             s.EnableSleeping = false;
@@ -408,8 +398,19 @@ namespace Fulcrum.Tests.Solver
             JointDef Hold(BodyHandle a, BodyHandle b, Vector3 anchorA, Vector3 anchorB) => kind == JointKind.Fixed
                 ? JointDef.Fixed(a, b, anchorA, anchorB)
                 : JointDef.Hinge(a, b, anchorA, anchorB, Vector3.UnitY, Vector3.UnitY);
-            w.CreateJoint(Hold(BodyHandle.None, link, Vector3.Zero, new Vector3(-0.25f, 0, 0)));
-            w.CreateJoint(Hold(link, load, new Vector3(0.25f, 0, 0), new Vector3(-0.1f, 0, 0)));
+            JointDef root = Hold(BodyHandle.None, link, Vector3.Zero, new Vector3(-0.25f, 0, 0));
+            if (stop != 0)
+            {
+                // About +z gravity turns the arm toward negative angles, onto a lower stop at 0;
+                // about -z toward positive ones, onto an upper stop at 0.
+                Vector3 axis = stop > 0 ? Vector3.UnitZ : -Vector3.UnitZ;
+                root = JointDef.Hinge(BodyHandle.None, link, Vector3.Zero, new Vector3(-0.25f, 0, 0), axis, axis);
+                root.LowerDeg = stop > 0 ? 0 : -90;
+                root.UpperDeg = stop > 0 ? 90 : 0;
+            }
+            w.CreateJoint(root);
+            w.CreateJoint(stop != 0 ? JointDef.Fixed(link, load, new Vector3(0.25f, 0, 0), new Vector3(-0.1f, 0, 0))
+                : Hold(link, load, new Vector3(0.25f, 0, 0), new Vector3(-0.1f, 0, 0)));
             for (int n = 0; n < 300; n++) w.Step(Dt);
             BodyRef r = w.GetBody(load);
             speed = r.LinearVelocity.Length();
@@ -426,33 +427,12 @@ namespace Fulcrum.Tests.Solver
         public void A_heavy_load_resting_on_a_light_arm_against_its_stop_holds(
             [Values(true, false)] bool lower, [Values(10f, 1000f, 1e5f)] float loadMass)
         {
-            float trees = Door(lower, loadMass, true, out float speed);
-            float rows = Door(lower, loadMass, false, out _);
+            float trees = Cantilever(JointKind.Hinge, loadMass, true, out float speed, lower ? 1 : -1);
+            float rows = Cantilever(JointKind.Hinge, loadMass, false, out _, lower ? 1 : -1);
             double omega = 2 * Math.PI * 60;
             TestContext.Out.WriteLine($"{(lower ? "lower" : "upper")} stop, {loadMass:G} kg: load {trees * 1000:F4} mm low with joint trees, {rows * 1000:F1} mm row by row; speed {speed:E1} m/s");
             Assert.That(trees, Is.EqualTo(G / (omega * omega)).Within(0.1 * G / (omega * omega)));
             Assert.That(speed, Is.LessThan(1e-3f));
-        }
-
-        static float Door(bool lower, float loadMass, bool trees, out float speed)
-        {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            s.JointTrees = trees;
-            var w = new World(s);
-            BodyHandle arm = Box(w, new Vector3(0.25f, 0, 0), new Vector3(0.25f, 0.05f, 0.05f), 1f);
-            BodyHandle load = Box(w, new Vector3(0.6f, 0, 0), new Vector3(0.1f), loadMass);
-            // About +z gravity turns the arm toward negative angles, onto a lower stop at 0; about
-            // -z toward positive ones, onto an upper stop at 0.
-            JointDef hinge = JointDef.Hinge(BodyHandle.None, arm, Vector3.Zero, new Vector3(-0.25f, 0, 0), lower ? Vector3.UnitZ : -Vector3.UnitZ, lower ? Vector3.UnitZ : -Vector3.UnitZ);
-            if (lower) { hinge.LowerDeg = 0; hinge.UpperDeg = 90; }
-            else { hinge.LowerDeg = -90; hinge.UpperDeg = 0; }
-            w.CreateJoint(hinge);
-            w.CreateJoint(JointDef.Fixed(arm, load, new Vector3(0.25f, 0, 0), new Vector3(-0.1f, 0, 0)));
-            for (int n = 0; n < 300; n++) w.Step(Dt);
-            BodyRef r = w.GetBody(load);
-            speed = r.LinearVelocity.Length();
-            return float.IsFinite(r.Position.Y) ? -r.Position.Y : float.PositiveInfinity;
         }
 
         // A 1000 kg load under one 1 kg link with JointTrees off: the rows one at a time, each a

@@ -742,16 +742,7 @@ namespace Fulcrum.Dynamics
             if (_rows[j] == JointKind.Prismatic)
             {
                 // Rows 0-1: -J = -s [p, r x p] across the slide axis; rows 2-4: -J = [0, -s e_k].
-                for (int row = 0; row < 2; row++)
-                {
-                    Vector3 pr = _axes[3 * j + row], rp = Vector3.Cross(r, pr);
-                    for (int c = 0; c < 6; c++)
-                    {
-                        double v = -s * (c == 0 ? pr.X : c == 1 ? pr.Y : c == 2 ? pr.Z : c == 3 ? rp.X : c == 4 ? rp.Y : rp.Z);
-                        if (transpose) h[at + 6 * c + row] = v;
-                        else h[at + 6 * row + c] = v;
-                    }
-                }
+                for (int row = 0; row < 2; row++) LinearRow(h, at, row, s, _axes[3 * j + row], r, transpose);
                 for (int k = 0; k < 3; k++)
                 {
                     int row = 2 + k, c = 3 + k;
@@ -763,16 +754,7 @@ namespace Fulcrum.Dynamics
             if (_rows[j] == JointKind.Distance)
             {
                 // Along the rod and the two across it: -J = -s [a, r x a].
-                for (int row = 0; row < 3; row++)
-                {
-                    Vector3 n = _axes[3 * j + row], rn = Vector3.Cross(r, n);
-                    for (int c = 0; c < 6; c++)
-                    {
-                        double v = -s * (c == 0 ? n.X : c == 1 ? n.Y : c == 2 ? n.Z : c == 3 ? rn.X : c == 4 ? rn.Y : rn.Z);
-                        if (transpose) h[at + 6 * c + row] = v;
-                        else h[at + 6 * row + c] = v;
-                    }
-                }
+                for (int row = 0; row < 3; row++) LinearRow(h, at, row, s, _axes[3 * j + row], r, transpose);
                 return;
             }
             Span<double> block = stackalloc double[18];
@@ -798,6 +780,18 @@ namespace Fulcrum.Dynamics
                     if (transpose) h[at + 6 * (3 + c) + row] = v;
                     else h[at + 6 * row + 3 + c] = v;
                 }
+            }
+        }
+
+        // One linear row of -J, -s [a, r x a], at row `row` of the 3x6 block at h[at] (or column `row` of its 6x3 transpose).
+        static void LinearRow(double[] h, int at, int row, double s, Vector3 a, Vector3 r, bool transpose)
+        {
+            Vector3 ra = Vector3.Cross(r, a);
+            for (int c = 0; c < 6; c++)
+            {
+                double v = -s * (c == 0 ? a.X : c == 1 ? a.Y : c == 2 ? a.Z : c == 3 ? ra.X : c == 4 ? ra.Y : ra.Z);
+                if (transpose) h[at + 6 * c + row] = v;
+                else h[at + 6 * row + c] = v;
             }
         }
 
