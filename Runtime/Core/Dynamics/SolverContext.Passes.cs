@@ -145,7 +145,7 @@ namespace Fulcrum.Dynamics
         /// (<see cref="JointTreeSolver"/>); with <paramref name="enabled"/> false every joint's rows
         /// stay in the Gauss-Seidel passes. After <see cref="Prepare"/>.
         /// </summary>
-        public void BuildJointTrees(bool enabled) => _trees.Build(Bodies, BodyCount, _joints.Data, JointOrder, JointCount, _jointParameters.Joint, enabled);
+        public void BuildJointTrees(bool enabled) => _trees.Build(Bodies, BodyCount, _joints.Data, JointOrder, JointCount, _jointParameters.Joint, _dt, enabled);
 
         /// <summary>Restitution's free approach speeds from the velocities now (TGS, each substep; see ContactSolver.RecordImpact).</summary>
         public void RefreshApproach() => RunColors(ColorPass.Approach);

@@ -64,7 +64,7 @@ namespace Fulcrum.Dynamics
         public bool DirectRotation;
         /// <summary>
         /// A hinge's limit row solved by <see cref="JointTreeSolver"/> this step: +1 the lower limit
-        /// it rests on, -1 the upper, 0 none (set with <see cref="DirectRotation"/>).
+        /// it rests on or closes on, -1 the upper, 0 none (set with <see cref="DirectRotation"/>).
         /// </summary>
         public sbyte DirectLimit;
 

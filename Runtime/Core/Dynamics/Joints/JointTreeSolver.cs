@@ -35,9 +35,9 @@ namespace Fulcrum.Dynamics
     /// both with two compliant rows across them for their geometric stiffness (see Factor),
     /// and a prismatic joint as its two rows across the slide axis and its rotation lock. A joint
     /// further apart than its capped bias closes at full rate keeps its rows
-    /// (it is being pulled in). A hinge resting on an angle limit brings that row too (see
+    /// (it is being pulled in). A hinge on or closing on an angle limit brings that row too (see
     /// RestingLimit). The rest (a loop's closing joint, a bridge's second anchor, limits being
-    /// struck or left, motors, cone and twist limits, friction, springs) stay in the Gauss-Seidel
+    /// left, motors, cone and twist limits, friction, springs) stay in the Gauss-Seidel
     /// passes, and the block is one more item of those passes (block Gauss-Seidel): solved after
     /// the last biased sweep of a TGS substep and after its relax sweep (after every sweep it cost
     /// ragdolls 40 % more, every test passing either way), and after every PGS velocity sweep (only after
@@ -75,6 +75,8 @@ namespace Fulcrum.Dynamics
         Vector3[] _error = new Vector3[16];
         Vector2[] _scale = new Vector2[96];
         bool[] _leaf = new bool[16];
+        // Per joint node: its one-sided row (a stop, a rope) released for this factorisation.
+        bool[] _free = new bool[16];
         // Factor: D^-1 (6x6 per node), H_ip (the block to the parent, rows of i, 6x6 room) and L = D^-1 H_ip.
         double[] _dinv = new double[16 * 36], _h = new double[16 * 36], _l = new double[16 * 36];
         double[] _x = new double[16 * 6];
@@ -93,7 +95,7 @@ namespace Fulcrum.Dynamics
         /// Picks this step's tree joints (see the class) and marks them
         /// (<see cref="JointData.DirectPoint"/>); clears every mark when <paramref name="enabled"/> is false.
         /// </summary>
-        public void Build(SolverBody[] bodies, int bodyCount, JointData[] data, int[] jointOrder, int jointCount, in Softness soft, bool enabled)
+        public void Build(SolverBody[] bodies, int bodyCount, JointData[] data, int[] jointOrder, int jointCount, in Softness soft, float dt, bool enabled)
         {
             _directCount = 0;
             _nodes = 0;
@@ -162,7 +164,7 @@ namespace Fulcrum.Dynamics
                 {
                     HingeRows(j.FrameA, j.FrameB, out _, out _, out float e1, out float e2);
                     j.DirectRotation = soft.BiasRate * MathF.Sqrt(e1 * e1 + e2 * e2) <= soft.MaxBias;
-                    if (j.DirectRotation) j.DirectLimit = RestingLimit(j, soft, bodies[a].AngularVelocity, bodies[b].AngularVelocity);
+                    if (j.DirectRotation) j.DirectLimit = RestingLimit(j, soft, bodies[a].AngularVelocity, bodies[b].AngularVelocity, dt);
                 }
                 _direct[_directCount++] = slot;
             }
@@ -170,35 +172,28 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>
-        /// The angle limit a hinge rests on (+1 lower, -1 upper, 0 neither): within
-        /// <see cref="LimitReach"/> of it or past it (by no more than the capped bias closes).
-        /// Its row then joins the block as an equality at the limit whose accumulated impulse may
-        /// only push the hinge away from it (clamped at zero), so a heavy load held by a light
-        /// arm against its stop rests on the arm's true inertia. Row by row the limit row was a
-        /// spring on the 1 kg arm's: a 1000 kg load on it drooped 85 degrees past the stop and
-        /// 1e5 kg fell through it. A motor does not join: a velocity row must stay rigid (with the
-        /// soft step's leak it holds nothing at rest), and one rigid row among the block's soft ones
-        /// over-delivered (a motor holding 10 kg on a 1 kg arm threw the load up); row by row a
-        /// motor holding 1000 kg on a 1 kg arm lets it droop 33 degrees.
+        /// The angle limit a hinge rests on or closes on (+1 lower, -1 upper, 0 neither): within
+        /// <see cref="LimitReach"/> of it, or closing fast enough to reach it within the step,
+        /// not leaving it faster than <see cref="RestingSpin"/>, and not past it by more than the
+        /// capped bias closes. Its row joins the block: speculative while the stop is ahead (the
+        /// hinge may close the gap within the substep), an equality on it, and only ever pushing
+        /// (a row the block would have pull is released and the block solved again, see Solve).
+        /// Row by row the limit row was a spring on the light arm: a 1000 kg load on a 1 kg arm
+        /// drooped 97 degrees past its stop, and swung onto it went 99 degrees through.
         /// </summary>
-        static sbyte RestingLimit(in JointData j, in Softness soft, Vector3 wA, Vector3 wB)
+        static sbyte RestingLimit(in JointData j, in Softness soft, Vector3 wA, Vector3 wB, float dt)
         {
             if (!j.HasLowerLimit && !j.HasUpperLimit) return 0;
-            // Resting: on the stop and turning slowly. A limit struck or left within the step stays
-            // row by row: clamped inside the block it pushed the other rows off (five ragdolls'
-            // worst joint error went from 15 to 33 mm; taken only while turning under
-            // RestingSpin, 17.1 mm). Taken while closing on the stop, as an equality it stopped a
-            // swinging arm short of the stop and threw it back, and as a speculative row (the gap
-            // closed within the substep, as a contact's) the ragdolls' joints tore (471 mm).
             float spin = Vector3.Dot(wB - wA, Vector3.Transform(Vector3.UnitX, j.FrameA));
-            if (MathF.Abs(spin) > RestingSpin) return 0;
             float angle = JointSolver.TwistAngle(j.FrameA, j.FrameB);
-            if (j.HasLowerLimit && angle - j.Lower <= LimitReach && soft.BiasRate * (j.Lower - angle) <= soft.MaxBias) return 1;
-            if (j.HasUpperLimit && j.Upper - angle <= LimitReach && soft.BiasRate * (angle - j.Upper) <= soft.MaxBias) return -1;
+            if (j.HasLowerLimit && spin <= RestingSpin && angle - j.Lower <= LimitReach + MathF.Max(0, -spin) * dt
+                && soft.BiasRate * (j.Lower - angle) <= soft.MaxBias) return 1;
+            if (j.HasUpperLimit && spin >= -RestingSpin && j.Upper - angle <= LimitReach + MathF.Max(0, spin) * dt
+                && soft.BiasRate * (angle - j.Upper) <= soft.MaxBias) return -1;
             return 0;
         }
 
-        /// <summary>The fastest a hinge may turn about its axis and still count as resting on a limit, rad/s: 0.2.</summary>
+        /// <summary>The fastest a hinge may turn away from a limit and still count as on it, rad/s: 0.2.</summary>
         const float RestingSpin = 0.2f;
 
         /// <summary>How close to an angle limit a hinge counts as resting on it, rad: 0.005 (0.3 degrees).</summary>
@@ -269,6 +264,7 @@ namespace Fulcrum.Dynamics
                 _axes = new Vector3[3 * capacity];
                 _error = new Vector3[capacity];
                 _leaf = new bool[capacity];
+                _free = new bool[capacity];
             }
             if (_dinv.Length < 36 * capacity)
             {
@@ -291,6 +287,7 @@ namespace Fulcrum.Dynamics
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
             }
             _nodes = n;
+            for (int i = 0; i < n; i++) _free[i] = false;
             // Adjacency of body nodes: a linked list of (joint node) edges per body node.
             for (int i = 0; i < n; i++) _parent[i] = -2;
             for (int i = 0; i < n; i++) _first[i] = -1;
@@ -394,6 +391,63 @@ namespace Fulcrum.Dynamics
                 _stale = false;
             }
             double[] x = _x;
+            Compute(bodies, data, soft, h, useBias);
+            // One-sided rows (a stop, a rope) the block would have pull: released (their row made
+            // free) and the block solved once more, so the other rows do not lean on an impulse
+            // the clamp below takes away (clamped alone, a limb lifting off its stop pushed its
+            // joints apart).
+            if (Release(bodies, data) && Factor(bodies, data, h)) Compute(bodies, data, soft, h, useBias);
+            Apply(bodies, data, h);
+        }
+
+        /// <summary>A released one-sided row's compliance: it takes no part in the block.</summary>
+        const double Released = 1e12;
+
+        // Releases the one-sided rows whose new accumulated impulse would pull (their accumulated
+        // impulse taken back from the bodies); true if any.
+        bool Release(SolverBody[] bodies, JointData[] data)
+        {
+            bool any = false;
+            double[] x = _x;
+            for (int i = 0; i < _nodes; i++)
+            {
+                if (_joint[i] < 0 || _free[i]) continue;
+                ref JointData j = ref data[_joint[i]];
+                int at = 6 * i;
+                ref SolverBody a = ref bodies[j.SolverA];
+                ref SolverBody b = ref bodies[j.SolverB];
+                if (_rows[i] == JointKind.Hinge && _dim[i] == 6)
+                {
+                    Vector2 s = _scale[6 * i + 5];
+                    ref AxisConstraintPart stop = ref j.DirectLimit > 0 ? ref j.Parts.Hinge.LowerLimit : ref j.Parts.Hinge.UpperLimit;
+                    if (stop.Impulse + s.X * (float)x[at + 5] - s.Y * stop.Impulse >= 0f) continue;
+                    // What it holds (the warm start's push) is taken back before the block is solved again.
+                    Vector3 l = stop.Impulse * _axes[3 * i + 2];
+                    stop.Impulse = 0;
+                    if (a.IsDynamic != 0) a.ApplyAngularImpulse(l);
+                    if (b.IsDynamic != 0) b.ApplyAngularImpulse(-l);
+                }
+                else if (_rows[i] == JointKind.Distance && j.MinLength != j.MaxLength)
+                {
+                    Vector2 s = _scale[6 * i];
+                    ref AxisConstraintPart rope = ref j.Parts.Distance.UpperLimit;
+                    if (rope.Impulse + s.X * (float)x[at] - s.Y * rope.Impulse >= 0f) continue;
+                    Vector3 p = rope.Impulse * _axes[3 * i];
+                    rope.Impulse = 0;
+                    if (a.IsDynamic != 0) a.ApplyImpulse(_armA[i], p);
+                    if (b.IsDynamic != 0) b.ApplyImpulse(_armB[i], -p);
+                }
+                else continue;
+                _free[i] = true;
+                any = true;
+            }
+            return any;
+        }
+
+        // The right-hand sides (J v + bias) and the block solve: x = -A^-1 (J v + bias).
+        void Compute(SolverBody[] bodies, JointData[] data, in Softness soft, float h, bool useBias)
+        {
+            double[] x = _x;
             for (int i = 0; i < _nodes; i++)
             {
                 int at = 6 * i;
@@ -455,12 +509,18 @@ namespace Fulcrum.Dynamics
                 Vector3 bias = Vector3.Zero;
                 massScale = 1;
                 impulseScale = 0;
+                // A stop still ahead (error > 0) is speculative, as a contact's gap: the hinge may
+                // close it within the substep, and the row stops only what would pass it.
+                Vector3 error = _error[i];
+                float ahead = _rows[i] == JointKind.Hinge && rows == 3 && error.Z > 0 ? error.Z : 0;
+                if (ahead > 0) error.Z = 0;
                 if (useBias)
                 {
-                    Vector3 raw = soft.BiasRate * _error[i];
+                    Vector3 raw = soft.BiasRate * error;
                     soft.Capped(raw.Length(), out float k, out massScale, out impulseScale);
                     bias = k * raw;
                 }
+                if (ahead > 0) bias.Z = ahead / h;
                 for (int r = 0; r < rows; r++)
                 {
                     x[at + 3 + r] = Vector3.Dot(_axes[3 * i + r], w) + (r == 0 ? bias.X : r == 1 ? bias.Y : bias.Z);
@@ -503,6 +563,12 @@ namespace Fulcrum.Dynamics
                     x[at + r] -= sum;
                 }
             }
+        }
+
+        // Applies the block's impulses to the rows and the bodies.
+        void Apply(SolverBody[] bodies, JointData[] data, float h)
+        {
+            double[] x = _x;
             // x holds the rigid impulses -A^-1 (J v + bias). The soft step scales them as a single
             // row's: dLambda = massScale x - impulseScale lambda, so a biased row is a spring on the
             // tree's true effective mass A^-1 (the load's, not the link's). Applied row by row.
@@ -658,6 +724,7 @@ namespace Fulcrum.Dynamics
                         double compliance = stiffness * step * step * lighter > 0.1 ? 1.0 / (stiffness * step * step) : 1e12;
                         dm[m + 7] = -compliance;
                         dm[m + 14] = -compliance;
+                        if (_free[i]) dm[m] = dm[m + 7] = dm[m + 14] = -Released; // slack: no tension, no stiffness across
                     }
                     else if (_rows[i] == JointKind.Fixed)
                     {
@@ -680,6 +747,7 @@ namespace Fulcrum.Dynamics
                             limit = j.DirectLimit > 0 ? angle - j.Lower : j.Upper - angle;
                         }
                         _error[i] = new Vector3(e1, e2, limit);
+                        if (_free[i] && j.DirectLimit != 0) dm[m + 35] = -Released;
                     }
                     continue;
                 }
@@ -890,7 +958,12 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>Marks the factorisation stale: the bodies moved (arms, gaps and world inertias changed).</summary>
-        public void Invalidate() => _stale = true;
+        public void Invalidate()
+        {
+            _stale = true;
+            // Each position update starts with every one-sided row (a stop, a rope) held again.
+            for (int i = 0; i < _nodes; i++) _free[i] = false;
+        }
 
         static void Grow(ref int[] a, int n)
         {
