@@ -390,14 +390,13 @@ namespace Fulcrum.Dynamics
                 }
                 _stale = false;
             }
-            double[] x = _x;
             Compute(bodies, data, soft, h, useBias);
             // One-sided rows (a stop, a rope) the block would have pull: released (their row made
             // free) and the block solved once more, so the other rows do not lean on an impulse
             // the clamp below takes away (clamped alone, a limb lifting off its stop pushed its
             // joints apart).
             if (Release(bodies, data) && Factor(bodies, data, h)) Compute(bodies, data, soft, h, useBias);
-            Apply(bodies, data, h);
+            Apply(bodies, data);
         }
 
         /// <summary>A released one-sided row's compliance: it takes no part in the block.</summary>
@@ -566,7 +565,7 @@ namespace Fulcrum.Dynamics
         }
 
         // Applies the block's impulses to the rows and the bodies.
-        void Apply(SolverBody[] bodies, JointData[] data, float h)
+        void Apply(SolverBody[] bodies, JointData[] data)
         {
             double[] x = _x;
             // x holds the rigid impulses -A^-1 (J v + bias). The soft step scales them as a single
