@@ -18,6 +18,15 @@ namespace Fulcrum.Tests.Solver
         const float G = 9.81f;
         const float Half = 0.25f;
 
+        // A world with sleeping off (a load at rest must keep being solved) and joint trees on or off.
+        static World Awake(bool trees = true)
+        {
+            WorldSettings s = WorldSettings.Default;
+            s.EnableSleeping = false;
+            s.JointTrees = trees;
+            return new World(s);
+        }
+
         static JointDef Link(JointKind kind, BodyHandle a, BodyHandle b, Vector3 anchorA, Vector3 anchorB)
         {
             switch (kind)
@@ -124,9 +133,7 @@ namespace Fulcrum.Tests.Solver
         [Test]
         public void A_rope_that_goes_slack_pushes_nothing()
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            var w = new World(s);
+            var w = Awake();
             BodyHandle link = Box(w, new Vector3(0, -0.5f, 0), new Vector3(0.05f, Half, 0.05f), 1f);
             w.CreateJoint(JointDef.Distance(BodyHandle.None, link, Vector3.Zero, new Vector3(0, Half, 0), 0f, 0.25f));
             BodyHandle load = Box(w, new Vector3(0, -1.1f, 0), new Vector3(0.1f), 1000f);
@@ -167,9 +174,7 @@ namespace Fulcrum.Tests.Solver
         [TestCase(0.6f)]
         public void A_heavy_load_swung_on_a_light_link_between_rods_keeps_its_length_and_swing(float angle)
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            var w = new World(s);
+            var w = Awake();
             Quaternion tilt = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
             const float rod = 0.1f;
             BodyHandle link = Box(w, Vector3.Transform(new Vector3(0, -rod - Half, 0), tilt), new Vector3(0.05f, Half, 0.05f), 1f, tilt);
@@ -197,10 +202,7 @@ namespace Fulcrum.Tests.Solver
 
         static float RodChain(float loadMass, bool trees, out float speed, bool rope)
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            s.JointTrees = trees;
-            var w = new World(s);
+            var w = Awake(trees);
             const float rod = 0.1f;
             BodyHandle prev = BodyHandle.None;
             Vector3 prevAnchor = Vector3.Zero;
@@ -245,10 +247,7 @@ namespace Fulcrum.Tests.Solver
 
         static float Rail(float loadMass, bool trees, out float speed, out float x)
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            s.JointTrees = trees;
-            var w = new World(s);
+            var w = Awake(trees);
             BodyHandle carriage = Box(w, Vector3.Zero, new Vector3(0.25f, 0.1f, 0.1f), 1f);
             BodyHandle load = Box(w, new Vector3(0, -0.35f, 0), new Vector3(0.25f), loadMass);
             w.CreateJoint(JointDef.Prismatic(BodyHandle.None, carriage, Vector3.Zero, Vector3.Zero, Vector3.UnitX));
@@ -278,9 +277,7 @@ namespace Fulcrum.Tests.Solver
         [Test]
         public void A_heavy_bob_on_a_light_chain_swings_with_the_simple_pendulum_period()
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            var w = new World(s);
+            var w = Awake();
             const float theta0 = 0.1f;
             const int links = 5;
             Quaternion tilt = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, theta0);
@@ -332,9 +329,7 @@ namespace Fulcrum.Tests.Solver
         [Test]
         public void A_branching_tree_of_light_links_holds_two_heavy_loads()
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            var w = new World(s);
+            var w = Awake();
             BodyHandle hub = Box(w, new Vector3(0, -Half, 0), new Vector3(1f, Half, 0.05f), 1f);
             w.CreateJoint(JointDef.Ball(BodyHandle.None, hub, Vector3.Zero, new Vector3(0, Half, 0)));
             var loads = new BodyHandle[2];
@@ -387,12 +382,9 @@ namespace Fulcrum.Tests.Solver
         // A 1 kg link 0.5 m long held out level from the world and a load held at its far end: by
         // welds, by hinges about the vertical, or (stop = +1 / -1) by a hinge about +z / -z resting
         // on its lower / upper limit at 0 with the load welded on.
-        static float Cantilever(JointKind kind, float loadMass, bool trees, out float speed, int stop = 0, float lift = 0, Action<World, BodyHandle>? watch = null)
+        static (World, BodyHandle load) BuildCantilever(JointKind kind, float loadMass, bool trees, int stop, float lift)
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            s.JointTrees = trees;
-            var w = new World(s);
+            var w = Awake(trees);
             // Lifted: created turned up by `lift` rad about the stop's hinge axis, the stop that far below.
             Quaternion up = Quaternion.CreateFromAxisAngle(stop >= 0 ? Vector3.UnitZ : -Vector3.UnitZ, stop >= 0 ? lift : -lift);
             BodyHandle link = Box(w, Vector3.Transform(new Vector3(0.25f, 0, 0), up), new Vector3(0.25f, 0.05f, 0.05f), 1f, up);
@@ -414,6 +406,13 @@ namespace Fulcrum.Tests.Solver
             w.CreateJoint(root);
             w.CreateJoint(stop != 0 ? JointDef.Fixed(link, load, new Vector3(0.25f, 0, 0), new Vector3(-0.1f, 0, 0))
                 : Hold(link, load, new Vector3(0.25f, 0, 0), new Vector3(-0.1f, 0, 0)));
+            return (w, load);
+        }
+
+        // The same, 5 s from rest: how far below level the load ends (m), and its speed.
+        static float Cantilever(JointKind kind, float loadMass, bool trees, out float speed, int stop = 0, float lift = 0, Action<World, BodyHandle>? watch = null)
+        {
+            (World w, BodyHandle load) = BuildCantilever(kind, loadMass, trees, stop, lift);
             for (int n = 0; n < 300; n++)
             {
                 w.Step(Dt);
@@ -468,16 +467,7 @@ namespace Fulcrum.Tests.Solver
         [Test]
         public void A_door_thrown_off_its_stop_swings_free_and_comes_back_to_rest_on_it()
         {
-            WorldSettings s = WorldSettings.Default;
-            s.EnableSleeping = false;
-            var w = new World(s);
-            BodyHandle arm = Box(w, new Vector3(0.25f, 0, 0), new Vector3(0.25f, 0.05f, 0.05f), 1f);
-            BodyHandle load = Box(w, new Vector3(0.6f, 0, 0), new Vector3(0.1f), 1000f);
-            JointDef hinge = JointDef.Hinge(BodyHandle.None, arm, Vector3.Zero, new Vector3(-0.25f, 0, 0), Vector3.UnitZ, Vector3.UnitZ);
-            hinge.LowerDeg = 0;
-            hinge.UpperDeg = 90;
-            w.CreateJoint(hinge);
-            w.CreateJoint(JointDef.Fixed(arm, load, new Vector3(0.25f, 0, 0), new Vector3(-0.1f, 0, 0)));
+            (World w, BodyHandle load) = BuildCantilever(JointKind.Hinge, 1000f, true, stop: 1, lift: 0);
             for (int n = 0; n < 60; n++) w.Step(Dt);
             float rest = w.GetBody(load).Position.Y, highest = rest, lowest = rest;
             w.GetBody(load).LinearVelocity = new Vector3(0, 1f, 0);
