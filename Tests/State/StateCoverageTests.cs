@@ -46,9 +46,10 @@ namespace Fulcrum.Tests.State
             // Newton solver are saved by SoftBody.WriteState and checked by the round-trip tests), job objects and scratch.
             "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem.Diverged",
             "SoftBody._tetJob", "SoftBody._membraneJob", "SoftBody._bendingJob", "SoftBody.Contacts", "SoftBody.SelfContacts", "SoftBody._scratch",
-            // The tet kernels' (W, FreeW, M, inverted mark) per vertex and whether the body is pressed
-            // from outside (the volume floor): set from the saved arrays at the start of every step.
-            "TetStream.Masses", "TetStream.Loaded", "SoftBody._startLargestJ", "SoftBody._cleanEnd",
+            // The tet kernels' (W, FreeW, M, inverted mark) per vertex, the same masses per element, and
+            // whether the body is pressed from outside (the volume floor): set from the saved arrays at
+            // the start of every step.
+            "TetStream.Masses", "TetStream.ElementMasses", "TetStream.Loaded", "SoftBody._startLargestJ", "SoftBody._cleanEnd",
             // Timing of past passes (pool or calling thread); the choice never changes results.
             "SoftBody._threadChoice",
         };

@@ -74,30 +74,16 @@ namespace Fulcrum.SoftBodies
         public void Constraints(in Mat3 f, out float cDev, out Mat3 dDev, out float cVol, out Mat3 dVol)
         {
             Mat3 cof = DeformationGradient.Cofactor(f);
-            double j = Determinant(f) - 1.0;
-            double d = Deviatoric(f, j);
-            if (d > DeformationGradient.RestTolerance)
-            {
-                // dD/dF = 2 I_C/(I_C + 1) F + (2 beta j - 3/2) cof F, and dC_D/dF = dD/dF / (2 C_D).
-                double c = Math.Sqrt(d);
-                double ic = IC(f);
-                float s = (float)(ic / ((ic + 1.0) * c));
-                float t = (float)((2.0 * Beta * j - 1.5) / (2.0 * c));
-                cDev = (float)c;
-                dDev = f * s + cof * t;
-            }
-            else
-            {
-                // At rest the constraint has a cone point and no direction; it exerts nothing.
-                cDev = 0f;
-                dDev = default;
-            }
-            cVol = (float)j;
+            // dD/dF = 2 I_C/(I_C + 1) F + (2 beta j - 3/2) cof F, and dC_D/dF = dD/dF / (2 C_D);
+            // at rest the constraint has a cone point and no direction, and exerts nothing.
+            dDev = StableDeviatoric.Evaluate(f, Beta, out cDev, out float s, out float t, out float j) ? f * s + cof * t : default;
+            cVol = j;
             dVol = cof;
         }
 
-        // D = a - ln(1 + a/4) - 3/2 j + beta j^2, in double: each term is first order in the
-        // strain and D is second order, so float would lose it to cancellation near rest.
+        // D = a - ln(1 + a/4) - 3/2 j + beta j^2 for the energy, summed as written in double (each
+        // term is first order in the strain and D second order); the constraints take it in float
+        // without the cancellation (StableDeviatoric).
         double Deviatoric(in Mat3 f, double j)
         {
             double a = IC(f) - 3.0;

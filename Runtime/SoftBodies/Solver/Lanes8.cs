@@ -99,20 +99,6 @@ namespace Fulcrum.SoftBodies
             return new Lanes8(x, y, z);
         }
 
-        /// <summary>The x, y, z of <paramref name="index"/>[at .. at + 7] of a Vector4 array, as lanes (w dropped); unchecked as above.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static Lanes8 Gather(Vector4[] v, int[] index, int at)
-        {
-            ref Vector4 b = ref MemoryMarshal.GetArrayDataReference(v);
-            ref int i = ref Unsafe.Add(ref MemoryMarshal.GetArrayDataReference(index), at);
-            Vector256<float> m0 = Vector256.Create(Unsafe.Add(ref b, i).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 4)).AsVector128());
-            Vector256<float> m1 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 1)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 5)).AsVector128());
-            Vector256<float> m2 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 2)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 6)).AsVector128());
-            Vector256<float> m3 = Vector256.Create(Unsafe.Add(ref b, Unsafe.Add(ref i, 3)).AsVector128(), Unsafe.Add(ref b, Unsafe.Add(ref i, 7)).AsVector128());
-            SolverBodyLanes.Transpose(m0, m1, m2, m3, out Vector256<float> x, out Vector256<float> y, out Vector256<float> z, out _);
-            return new Lanes8(x, y, z);
-        }
-
         /// <summary>Writes lanes back to the vertices <paramref name="index"/>[at .. at + 7] whose bit is set in <paramref name="write"/>; unchecked as above.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Scatter(Vector3[] v, int[] index, int at, uint write, in Lanes8 value)

@@ -31,7 +31,8 @@ namespace Fulcrum.SoftBodies
         // One block's values between the two stages (split so that each register-allocates on its own).
         struct Block
         {
-            public Lanes8 V0, V1, V2, V3, P0, P1, P2, P3, Mass0, Mass1, Mass2, Mass3;
+            public Lanes8 V0, V1, V2, V3, P0, P1, P2, P3;
+            public Vector256<float> W0, W1, W2, W3;
             public Vector256<float> Solved;
         }
 
@@ -42,12 +43,12 @@ namespace Fulcrum.SoftBodies
             int n = tets.Count;
             int[] vertices = tets.Vertices;
             float[] g = tets.Gradients;
-            Vector4[] masses = tets.Masses;
-            b.Mass0 = Lanes8.Gather(masses, vertices, e);
-            b.Mass1 = Lanes8.Gather(masses, vertices, n + e);
-            b.Mass2 = Lanes8.Gather(masses, vertices, 2 * n + e);
-            b.Mass3 = Lanes8.Gather(masses, vertices, 3 * n + e);
-            Vector256<float> active = ~Vector256.Equals(b.Mass0.X + b.Mass1.X + b.Mass2.X + b.Mass3.X, Vector256<float>.Zero);
+            float[] masses = tets.ElementMasses;
+            b.W0 = Lanes8.Load(masses, e);
+            b.W1 = Lanes8.Load(masses, n + e);
+            b.W2 = Lanes8.Load(masses, 2 * n + e);
+            b.W3 = Lanes8.Load(masses, 3 * n + e);
+            Vector256<float> active = ~Vector256.Equals(b.W0 + b.W1 + b.W2 + b.W3, Vector256<float>.Zero);
             if (active.ExtractMostSignificantBits() == 0) return 0;
             Lanes8 v0 = Lanes8.Gather(v, vertices, e), v1 = Lanes8.Gather(v, vertices, n + e);
             Lanes8 v2 = Lanes8.Gather(v, vertices, 2 * n + e), v3 = Lanes8.Gather(v, vertices, 3 * n + e);
@@ -82,19 +83,19 @@ namespace Fulcrum.SoftBodies
         {
             int n = tets.Count;
             int[] vertices = tets.Vertices;
-            Vector256<float> free = Vector256.GreaterThan(b.Mass0.Y, Vector256<float>.Zero) & Vector256.GreaterThan(b.Mass1.Y, Vector256<float>.Zero)
-                & Vector256.GreaterThan(b.Mass2.Y, Vector256<float>.Zero) & Vector256.GreaterThan(b.Mass3.Y, Vector256<float>.Zero) & b.Solved;
+            float[] masses = tets.ElementMasses;
+            Vector256<float> free = Vector256.GreaterThan(Lanes8.Load(masses, 8 * n + e), Vector256<float>.Zero) & b.Solved;
             Lanes8 p0 = b.P0, p1 = b.P1, p2 = b.P2, p3 = b.P3;
             if (free.ExtractMostSignificantBits() != 0)
             {
                 Lanes8 x0 = Lanes8.Gather(x, vertices, e), x1 = Lanes8.Gather(x, vertices, n + e);
                 Lanes8 x2 = Lanes8.Gather(x, vertices, 2 * n + e), x3 = Lanes8.Gather(x, vertices, 3 * n + e);
-                TorqueFreeWide.Project(x0, x1, x2, x3, b.Mass0.Z, b.Mass1.Z, b.Mass2.Z, b.Mass3.Z, free, ref p0, ref p1, ref p2, ref p3);
+                TorqueFreeWide.Project(x0, x1, x2, x3, Lanes8.Load(masses, 4 * n + e), Lanes8.Load(masses, 5 * n + e), Lanes8.Load(masses, 6 * n + e), Lanes8.Load(masses, 7 * n + e), free, ref p0, ref p1, ref p2, ref p3);
             }
-            Lanes8.Scatter(v, vertices, e, write, b.V0 + b.Mass0.X * p0);
-            Lanes8.Scatter(v, vertices, n + e, write, b.V1 + b.Mass1.X * p1);
-            Lanes8.Scatter(v, vertices, 2 * n + e, write, b.V2 + b.Mass2.X * p2);
-            Lanes8.Scatter(v, vertices, 3 * n + e, write, b.V3 + b.Mass3.X * p3);
+            Lanes8.Scatter(v, vertices, e, write, b.V0 + b.W0 * p0);
+            Lanes8.Scatter(v, vertices, n + e, write, b.V1 + b.W1 * p1);
+            Lanes8.Scatter(v, vertices, 2 * n + e, write, b.V2 + b.W2 * p2);
+            Lanes8.Scatter(v, vertices, 3 * n + e, write, b.V3 + b.W3 * p3);
         }
     }
 }

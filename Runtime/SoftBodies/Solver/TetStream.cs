@@ -53,6 +53,17 @@ namespace Fulcrum.SoftBodies
         public readonly Vector4[] Masses;
 
         /// <summary>
+        /// Per element, its vertices' masses as runs (packed once per step with <see cref="Masses"/>):
+        /// W of A, B, C, D in fields 0-3, M of A, B, C, D in fields 4-7, and in field 8 1 where all
+        /// four vertices are free (FreeW &gt; 0; the torque-free projection applies) else 0. The
+        /// eight-lane kernels load these instead of gathering four vertices' masses per pass.
+        /// </summary>
+        public readonly float[] ElementMasses;
+
+        /// <summary>Fields of <see cref="ElementMasses"/>.</summary>
+        public const int ElementMassFields = 9;
+
+        /// <summary>
         /// Whether the body may be pressed from outside in this step (a rigid shape it may
         /// touch, or an attachment): the <see cref="VolumeFloor"/> holds its tets only then.
         /// </summary>
@@ -66,6 +77,7 @@ namespace Fulcrum.SoftBodies
             RestVolume = new float[count];
             Gradients = new float[GradientFields * count];
             Masses = new Vector4[vertices];
+            ElementMasses = new float[ElementMassFields * count];
         }
 
         /// <summary>Copies indices, rest inverses and volumes from the element records.</summary>
@@ -92,10 +104,27 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        /// <summary>Packs (W, FreeW, M, 0) per vertex; call after anything changes them, before the substeps.</summary>
+        /// <summary>
+        /// Packs (W, FreeW, M, 0) per vertex and <see cref="ElementMasses"/> per element; call after
+        /// anything changes them, before the substeps.
+        /// </summary>
         public void Pack(float[] w, float[] freeW, float[] m)
         {
             for (int i = 0; i < Masses.Length; i++) Masses[i] = new Vector4(w[i], freeW[i], m[i], 0f);
+            int n = Count;
+            float[] em = ElementMasses;
+            for (int e = 0; e < n; e++)
+            {
+                bool free = true;
+                for (int k = 0; k < 4; k++)
+                {
+                    int v = Vertices[k * n + e];
+                    em[k * n + e] = w[v];
+                    em[(4 + k) * n + e] = m[v];
+                    free &= freeW[v] > 0f;
+                }
+                em[8 * n + e] = free ? 1f : 0f;
+            }
         }
 
         /// <summary>Writes the kept gradients into element records (for a saved state).</summary>

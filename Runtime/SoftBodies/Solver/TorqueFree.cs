@@ -21,7 +21,7 @@ namespace Fulcrum.SoftBodies
         public static void Project(Vector3 p0, Vector3 p1, Vector3 p2, Vector3 p3, float m0, float m1, float m2, float m3,
             ref Vector3 g0, ref Vector3 g1, ref Vector3 g2, ref Vector3 g3)
         {
-            Vector3 c = (m0 * p0 + m1 * p1 + m2 * p2 + m3 * p3) / (m0 + m1 + m2 + m3);
+            Vector3 c = (m0 * p0 + m1 * p1 + m2 * p2 + m3 * p3) * (1f / (m0 + m1 + m2 + m3));
             Vector3 r0 = p0 - c, r1 = p1 - c, r2 = p2 - c, r3 = p3 - c;
             Vector3 torque = Vector3.Cross(r0, g0) + Vector3.Cross(r1, g1) + Vector3.Cross(r2, g2) + Vector3.Cross(r3, g3);
             Vector3 q0 = m0 * r0, q1 = m1 * r1, q2 = m2 * r2, q3 = m3 * r3;

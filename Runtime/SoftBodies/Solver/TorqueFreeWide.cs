@@ -20,9 +20,8 @@ namespace Fulcrum.SoftBodies
             Vector256<float> m0, Vector256<float> m1, Vector256<float> m2, Vector256<float> m3, Vector256<float> apply,
             ref Lanes8 g0, ref Lanes8 g1, ref Lanes8 g2, ref Lanes8 g3)
         {
-            Vector256<float> total = m0 + m1 + m2 + m3;
-            Lanes8 sum = m0 * p0 + m1 * p1 + m2 * p2 + m3 * p3;
-            Lanes8 c = new Lanes8(sum.X / total, sum.Y / total, sum.Z / total);
+            Vector256<float> invTotal = Vector256<float>.One / (m0 + m1 + m2 + m3);
+            Lanes8 c = (m0 * p0 + m1 * p1 + m2 * p2 + m3 * p3) * invTotal;
             Lanes8 r0 = p0 - c, r1 = p1 - c, r2 = p2 - c, r3 = p3 - c;
             Lanes8 torque = Lanes8.Cross(r0, g0) + Lanes8.Cross(r1, g1) + Lanes8.Cross(r2, g2) + Lanes8.Cross(r3, g3);
             Lanes8 q0 = m0 * r0, q1 = m1 * r1, q2 = m2 * r2, q3 = m3 * r3;
@@ -45,6 +44,14 @@ namespace Fulcrum.SoftBodies
                 (ca * torque.X + cd * torque.Y + ce * torque.Z) * inv,
                 (cd * torque.X + cb * torque.Y + cf * torque.Z) * inv,
                 (ce * torque.X + cf * torque.Y + cc * torque.Z) * inv);
+            if (ok.ExtractMostSignificantBits() == 0xFF)
+            {
+                g0 -= Lanes8.Cross(omega, q0);
+                g1 -= Lanes8.Cross(omega, q1);
+                g2 -= Lanes8.Cross(omega, q2);
+                g3 -= Lanes8.Cross(omega, q3);
+                return;
+            }
             g0 = Lanes8.Select(ok, g0 - Lanes8.Cross(omega, q0), g0);
             g1 = Lanes8.Select(ok, g1 - Lanes8.Cross(omega, q1), g1);
             g2 = Lanes8.Select(ok, g2 - Lanes8.Cross(omega, q2), g2);

@@ -37,10 +37,11 @@ namespace Fulcrum.SoftBodies
                 Vector3 x0 = x[a], x1 = x[b], x2 = x[c], x3 = x[d];
                 Mat3 restInverse = RestInverse(tets, e);
                 Mat3 f = DeformationGradient.Of(x0, x1, x2, x3, restInverse);
-                // J - 1 as the wide kernel has it (double, then float), so both take the same tets;
-                // not computed at all in a body nothing presses (the floor holds only those).
-                bool nearFloor = tets.Loaded && (float)(StableNeoHookeanEnergy.Determinant(f) - 1.0) < VolumeFloor.Trigger - 1f;
                 model.Constraints(f, out float cD, out Mat3 dD, out float cH, out Mat3 dH);
+                // J - 1 as the wide kernel has it (the stable model's C_H), so both take the same
+                // tets; the floor holds only a body something presses.
+                bool nearFloor = tets.Loaded
+                    && (typeof(TModel) == typeof(StableNeoHookeanEnergy) ? cH : (float)(StableNeoHookeanEnergy.Determinant(f) - 1.0)) < VolumeFloor.Trigger - 1f;
                 DeformationGradient.VertexGradients(dD, restInverse, out Vector3 d0, out Vector3 d1, out Vector3 d2, out Vector3 d3);
                 DeformationGradient.VertexGradients(dH, restInverse, out Vector3 h0, out Vector3 h1, out Vector3 h2, out Vector3 h3);
 

@@ -13,10 +13,11 @@ namespace Fulcrum.SoftBodies
     /// at a time (AVX): vertex data moved into lanes by transposes (<see cref="Lanes8"/>), the
     /// element data read straight from <see cref="TetStream"/>'s runs, and the corrections
     /// written back lane by lane (the elements of a colour share no vertex, so the writes
-    /// never collide). Every float and double operation is the scalar kernel's, in its order
-    /// (no fused multiply-add; the logarithm is Math.Log per lane), so the results are
-    /// bit-identical to it and the solve does not depend on how a colour is split into
-    /// blocks, chunks or threads. Lanes near the <see cref="VolumeFloor"/> are then held above
+    /// never collide); the vertices' masses are loaded per element (<see cref="TetStream.ElementMasses"/>).
+    /// Every operation is the scalar kernel's, in its order (no fused multiply-add; the
+    /// deviatoric constraint in float as <see cref="StableDeviatoric"/> has it, its logarithm
+    /// per lane only in the rare lanes beyond the series), so the results are bit-identical to
+    /// it and the solve does not depend on how a colour is split into blocks, chunks or threads. Lanes near the <see cref="VolumeFloor"/> are then held above
     /// it by the scalar projection.
     /// </summary>
     internal static class XpbdTetSolverWide
@@ -33,8 +34,7 @@ namespace Fulcrum.SoftBodies
             {
                 AlphaDev = Vector256.Create(invH2 / model.DeviatoricStiffness),
                 AlphaVol = Vector256.Create(invH2 / model.HydrostaticStiffness),
-                Beta = Vector256.Create((double)model.Beta),
-                TwoBeta = Vector256.Create(2.0 * model.Beta),
+                Beta = Vector256.Create(model.Beta),
             };
             var block = new Block();
             Vector256<float> floorTrigger = Vector256.Create(VolumeFloor.Trigger - 1f);
@@ -60,8 +60,7 @@ namespace Fulcrum.SoftBodies
 
         struct Constants
         {
-            public Vector256<float> AlphaDev, AlphaVol;
-            public Vector256<double> Beta, TwoBeta;
+            public Vector256<float> AlphaDev, AlphaVol, Beta;
         }
 
         // One block's values between the stages. The kernel is split into three methods so
@@ -69,7 +68,8 @@ namespace Fulcrum.SoftBodies
         // past its inlining limits and leaves calls and spills in the loop).
         struct Block
         {
-            public Lanes8 X0, X1, X2, X3, D0, D1, D2, D3, H0, H1, H2, H3, G0, G1, G2, G3, Mass0, Mass1, Mass2, Mass3;
+            public Lanes8 X0, X1, X2, X3, D0, D1, D2, D3, H0, H1, H2, H3, G0, G1, G2, G3;
+            public Vector256<float> W0, W1, W2, W3;
             public Vector256<float> Active, CD, CH, Solved;
             public bool All;
         }
@@ -80,12 +80,12 @@ namespace Fulcrum.SoftBodies
         {
             int n = tets.Count;
             int[] vertices = tets.Vertices;
-            Vector4[] masses = tets.Masses;
-            b.Mass0 = Lanes8.Gather(masses, vertices, e);
-            b.Mass1 = Lanes8.Gather(masses, vertices, n + e);
-            b.Mass2 = Lanes8.Gather(masses, vertices, 2 * n + e);
-            b.Mass3 = Lanes8.Gather(masses, vertices, 3 * n + e);
-            Vector256<float> active = ~Vector256.Equals(b.Mass0.X + b.Mass1.X + b.Mass2.X + b.Mass3.X, Vector256<float>.Zero);
+            float[] masses = tets.ElementMasses;
+            b.W0 = Lanes8.Load(masses, e);
+            b.W1 = Lanes8.Load(masses, n + e);
+            b.W2 = Lanes8.Load(masses, 2 * n + e);
+            b.W3 = Lanes8.Load(masses, 3 * n + e);
+            Vector256<float> active = ~Vector256.Equals(b.W0 + b.W1 + b.W2 + b.W3, Vector256<float>.Zero);
             uint activeBits = active.ExtractMostSignificantBits();
             if (activeBits == 0) return false;
             b.Active = active;
@@ -107,13 +107,10 @@ namespace Fulcrum.SoftBodies
             // cof F (= dC_H/dF).
             Lanes8 k0 = Lanes8.Cross(f1, f2), k1 = Lanes8.Cross(f2, f0), k2 = Lanes8.Cross(f0, f1);
 
-            // The deviatoric constraint in double, per half (StableNeoHookeanEnergy.Constraints).
-            Half(f0, f1, f2, upper: false, k.Beta, k.TwoBeta, out Vector256<double> sLo, out Vector256<double> tLo, out Vector256<double> cLo, out Vector256<double> jLo, out Vector256<long> onLo);
-            Half(f0, f1, f2, upper: true, k.Beta, k.TwoBeta, out Vector256<double> sHi, out Vector256<double> tHi, out Vector256<double> cHi, out Vector256<double> jHi, out Vector256<long> onHi);
-            Vector256<float> dev = Vector256.Narrow(onLo, onHi).AsSingle();
-            Vector256<float> s = Vector256.Narrow(sLo, sHi), t = Vector256.Narrow(tLo, tHi);
-            b.CD = Avx.BlendVariable(Vector256<float>.Zero, Vector256.Narrow(cLo, cHi), dev);
-            b.CH = Vector256.Narrow(jLo, jHi);
+            // The deviatoric constraint (StableDeviatoric.Evaluate, lane by lane).
+            Vector256<float> dev = Deviatoric(f0, f1, f2, k.Beta, out Vector256<float> c, out Vector256<float> s, out Vector256<float> t, out Vector256<float> j);
+            b.CD = c;
+            b.CH = j;
             Lanes8 zero = default;
             Lanes8 dD0 = Lanes8.Select(dev, f0 * s + k0 * t, zero);
             Lanes8 dD1 = Lanes8.Select(dev, f1 * s + k1 * t, zero);
@@ -128,7 +125,7 @@ namespace Fulcrum.SoftBodies
         static uint Multipliers(ref Block b, in Constants k, TetStream tets, Vector2[] lambdas, bool keep, int e)
         {
             int n = tets.Count;
-            Vector256<float> w0 = b.Mass0.X, w1 = b.Mass1.X, w2 = b.Mass2.X, w3 = b.Mass3.X;
+            Vector256<float> w0 = b.W0, w1 = b.W1, w2 = b.W2, w3 = b.W3;
             Vector256<float> kDD = w0 * Lanes8.Dot(b.D0, b.D0) + w1 * Lanes8.Dot(b.D1, b.D1) + w2 * Lanes8.Dot(b.D2, b.D2) + w3 * Lanes8.Dot(b.D3, b.D3);
             Vector256<float> kHH = w0 * Lanes8.Dot(b.H0, b.H0) + w1 * Lanes8.Dot(b.H1, b.H1) + w2 * Lanes8.Dot(b.H2, b.H2) + w3 * Lanes8.Dot(b.H3, b.H3);
             Vector256<float> kDH = w0 * Lanes8.Dot(b.D0, b.H0) + w1 * Lanes8.Dot(b.D1, b.H1) + w2 * Lanes8.Dot(b.D2, b.H2) + w3 * Lanes8.Dot(b.D3, b.H3);
@@ -170,46 +167,65 @@ namespace Fulcrum.SoftBodies
         {
             int n = tets.Count;
             int[] vertices = tets.Vertices;
-            Vector256<float> free = Vector256.GreaterThan(b.Mass0.Y, Vector256<float>.Zero) & Vector256.GreaterThan(b.Mass1.Y, Vector256<float>.Zero)
-                & Vector256.GreaterThan(b.Mass2.Y, Vector256<float>.Zero) & Vector256.GreaterThan(b.Mass3.Y, Vector256<float>.Zero) & b.Solved;
+            float[] masses = tets.ElementMasses;
+            Vector256<float> free = Vector256.GreaterThan(Lanes8.Load(masses, 8 * n + e), Vector256<float>.Zero) & b.Solved;
             Lanes8 g0 = b.G0, g1 = b.G1, g2 = b.G2, g3 = b.G3;
             if (free.ExtractMostSignificantBits() != 0)
             {
                 Lanes8 p0 = Lanes8.Gather(xPrev, vertices, e), p1 = Lanes8.Gather(xPrev, vertices, n + e);
                 Lanes8 p2 = Lanes8.Gather(xPrev, vertices, 2 * n + e), p3 = Lanes8.Gather(xPrev, vertices, 3 * n + e);
-                TorqueFreeWide.Project(p0, p1, p2, p3, b.Mass0.Z, b.Mass1.Z, b.Mass2.Z, b.Mass3.Z, free, ref g0, ref g1, ref g2, ref g3);
+                TorqueFreeWide.Project(p0, p1, p2, p3, Lanes8.Load(masses, 4 * n + e), Lanes8.Load(masses, 5 * n + e), Lanes8.Load(masses, 6 * n + e), Lanes8.Load(masses, 7 * n + e), free, ref g0, ref g1, ref g2, ref g3);
             }
-            Lanes8.Scatter(x, vertices, e, write, b.X0 + b.Mass0.X * g0);
-            Lanes8.Scatter(x, vertices, n + e, write, b.X1 + b.Mass1.X * g1);
-            Lanes8.Scatter(x, vertices, 2 * n + e, write, b.X2 + b.Mass2.X * g2);
-            Lanes8.Scatter(x, vertices, 3 * n + e, write, b.X3 + b.Mass3.X * g3);
+            Lanes8.Scatter(x, vertices, e, write, b.X0 + b.W0 * g0);
+            Lanes8.Scatter(x, vertices, n + e, write, b.X1 + b.W1 * g1);
+            Lanes8.Scatter(x, vertices, 2 * n + e, write, b.X2 + b.W2 * g2);
+            Lanes8.Scatter(x, vertices, 3 * n + e, write, b.X3 + b.W3 * g3);
         }
 
-        // StableNeoHookeanEnergy.Constraints' double part for four lanes: J - 1, D, and where
-        // D > RestTolerance, C_D = sqrt(D) and the factors s, t of dC_D/dF = s F + t cof F.
+        // StableDeviatoric.Evaluate for eight lanes: the mask of lanes off rest, C_D (0 at rest), s, t and j = J - 1.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static void Half(in Lanes8 f0, in Lanes8 f1, in Lanes8 f2, bool upper, Vector256<double> beta, Vector256<double> twoBeta,
-            out Vector256<double> s, out Vector256<double> t, out Vector256<double> c, out Vector256<double> j, out Vector256<long> on)
+        static Vector256<float> Deviatoric(in Lanes8 f0, in Lanes8 f1, in Lanes8 f2, Vector256<float> beta,
+            out Vector256<float> c, out Vector256<float> s, out Vector256<float> t, out Vector256<float> j)
         {
-            Vector256<double> c0x = Widen(f0.X, upper), c0y = Widen(f0.Y, upper), c0z = Widen(f0.Z, upper);
-            Vector256<double> c1x = Widen(f1.X, upper), c1y = Widen(f1.Y, upper), c1z = Widen(f1.Z, upper);
-            Vector256<double> c2x = Widen(f2.X, upper), c2y = Widen(f2.Y, upper), c2z = Widen(f2.Z, upper);
-            Vector256<double> ic = c0x * c0x + c0y * c0y + c0z * c0z + c1x * c1x + c1y * c1y + c1z * c1z + c2x * c2x + c2y * c2y + c2z * c2z;
-            Vector256<double> det = c0x * (c1y * c2z - c2y * c1z) - c1x * (c0y * c2z - c2y * c0z) + c2x * (c0y * c1z - c1y * c0z);
-            j = det - Vector256.Create(1.0);
-            Vector256<double> a = ic - Vector256.Create(3.0);
-            Vector256<double> arg = Vector256.Create(1.0) + Vector256.Create(0.25) * a;
-            Vector256<double> log = Vector256.Create(Math.Log(arg.GetElement(0)), Math.Log(arg.GetElement(1)), Math.Log(arg.GetElement(2)), Math.Log(arg.GetElement(3)));
-            Vector256<double> d = Vector256.Max(Vector256<double>.Zero, a - log - Vector256.Create(1.5) * j + beta * j * j);
-            Vector256<double> mask = Vector256.GreaterThan(d, Vector256.Create(DeformationGradient.RestTolerance));
-            on = mask.AsInt64();
-            c = Vector256.Sqrt(d);
-            s = ic / ((ic + Vector256.Create(1.0)) * c);
-            t = (twoBeta * j - Vector256.Create(1.5)) / (Vector256.Create(2.0) * c);
+            Vector256<float> one = Vector256<float>.One;
+            Vector256<float> h00 = f0.X - one, h10 = f0.Y, h20 = f0.Z;
+            Vector256<float> h01 = f1.X, h11 = f1.Y - one, h21 = f1.Z;
+            Vector256<float> h02 = f2.X, h12 = f2.Y, h22 = f2.Z - one;
+            Vector256<float> tr = h00 + h11 + h22;
+            Vector256<float> sq = h00 * h00 + h10 * h10 + h20 * h20 + h01 * h01 + h11 * h11 + h21 * h21 + h02 * h02 + h12 * h12 + h22 * h22;
+            Vector256<float> minors = h00 * h11 - h01 * h10 + h11 * h22 - h12 * h21 + h00 * h22 - h02 * h20;
+            Vector256<float> det = h00 * (h11 * h22 - h12 * h21) - h01 * (h10 * h22 - h12 * h20) + h02 * (h10 * h21 - h11 * h20);
+            Vector256<float> higher = minors + det;
+            j = tr + higher;
+            Vector256<float> a = Vector256.Create(2f) * tr + sq;
+            Vector256<float> u = Vector256.Create(0.25f) * a;
+            Vector256<float> w = u / (Vector256.Create(2f) + u);
+            // StableDeviatoric.Series, and Direct in the lanes beyond its limit.
+            Vector256<float> z = w * w;
+            Vector256<float> p = (((z * Vector256.Create(1f / 11f) + Vector256.Create(1f / 9f)) * z + Vector256.Create(1f / 7f)) * z
+                + Vector256.Create(1f / 5f)) * z + Vector256.Create(1f / 3f);
+            Vector256<float> log = w * (u - Vector256.Create(2f) * z * p);
+            Vector256<float> series = Vector256.LessThanOrEqual(Vector256.Abs(w), Vector256.Create(StableDeviatoric.SeriesLimit));
+            if (series.ExtractMostSignificantBits() != 0xFF) log = DirectLanes(log, u, series);
+            Vector256<float> d = log + (Vector256.Create(0.75f) * sq - Vector256.Create(1.5f) * higher) + beta * j * j;
+            Vector256<float> on = Vector256.GreaterThan(d, Vector256.Create((float)DeformationGradient.RestTolerance));
+            // Lanes at rest get C_D = 0 and s = t = 0 (the square root and quotients of those lanes are discarded).
+            Vector256<float> cOn = Vector256.Sqrt(Vector256.Max(d, Vector256<float>.Zero));
+            c = Avx.BlendVariable(Vector256<float>.Zero, cOn, on);
+            s = Avx.BlendVariable(Vector256<float>.Zero, (Vector256.Create(3f) + a) / ((Vector256.Create(4f) + a) * cOn), on);
+            t = Avx.BlendVariable(Vector256<float>.Zero, (Vector256.Create(2f) * beta * j - Vector256.Create(1.5f)) / (Vector256.Create(2f) * cOn), on);
+            return on;
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        static Vector256<double> Widen(Vector256<float> v, bool upper) => upper ? Vector256.WidenUpper(v) : Vector256.WidenLower(v);
+        // StableDeviatoric.Direct in the lanes not set in the mask.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        static Vector256<float> DirectLanes(Vector256<float> log, Vector256<float> u, Vector256<float> series)
+        {
+            uint bits = series.ExtractMostSignificantBits();
+            for (int lane = 0; lane < 8; lane++)
+                if ((bits & (1u << lane)) == 0) log = log.WithElement(lane, StableDeviatoric.Direct(u.GetElement(lane)));
+            return log;
+        }
 
         // DeformationGradient.VertexGradients: g_k = G (row k of Dm^-1), g_0 = -(g_1 + g_2 + g_3).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
