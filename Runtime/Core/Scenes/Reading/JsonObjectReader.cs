@@ -123,6 +123,26 @@ namespace Fulcrum.Scenes
             return null;
         }
 
+        /// <summary>
+        /// A member that names one value of an enumeration, spelled as <paramref name="parse"/>
+        /// reads it (one of <see cref="SceneNames"/>' TryParse): true with the value; false when
+        /// absent (reported when required), not a string, or an unknown name, which is reported
+        /// with the spellings in <paramref name="expected"/>.
+        /// </summary>
+        public bool Name<T>(string key, NameParser<T> parse, string what, string expected, out T value, bool required = false)
+        {
+            value = default!;
+            string? name = String(key, required);
+            if (name == null) return false;
+            if (parse(name, out value)) return true;
+            Unknown(key, what, name, expected);
+            return false;
+        }
+
+        /// <summary>Reports the member's string <paramref name="name"/> as no known <paramref name="what"/>, listing the <paramref name="expected"/> spellings.</summary>
+        public void Unknown(string key, string what, string name, string expected) =>
+            _d.Add(PathOf(key), $"unknown {what} '{name}' (expected {expected})", _obj[key]);
+
         public Vector3 Vector(string key, Vector3 fallback, bool required = false)
         {
             JsonValue? v = Take(key, required);

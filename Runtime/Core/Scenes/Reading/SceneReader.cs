@@ -37,11 +37,7 @@ namespace Fulcrum.Scenes
             var s = new SceneSolver();
             JsonObjectReader? r = JsonObjectReader.Open(v, d);
             if (r == null) return s;
-            if (r.String("type") is string type)
-            {
-                if (SceneNames.TryParse(type, out SolverType t)) s.Type = t;
-                else d.Add(JsonPath.Member(v.Path, "type"), $"unknown solver '{type}' (expected pgs or tgs)", v["type"]);
-            }
+            if (r.Name("type", SceneNames.TryParse, "solver", "pgs or tgs", out SolverType t)) s.Type = t;
             s.Iterations = r.Int("iterations", s.Iterations);
             s.Substeps = r.Int("substeps", s.Substeps);
             s.ContactHertz = r.OptionalFloat("contactHertz");
@@ -80,11 +76,7 @@ namespace Fulcrum.Scenes
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a body object");
             if (r == null) return null;
             var b = new SceneBody { Name = r.String("name", required: true) ?? "" };
-            if (r.String("type") is string type)
-            {
-                if (SceneNames.TryParse(type, out BodyType t)) b.Type = t;
-                else d.Add(JsonPath.Member(v.Path, "type"), $"unknown body type '{type}' (expected static, kinematic or dynamic)", v["type"]);
-            }
+            if (r.Name("type", SceneNames.TryParse, "body type", "static, kinematic or dynamic", out BodyType t)) b.Type = t;
             if (r.Take("shape", required: true) is JsonValue shape) b.Shape = ReadShape(shape, d);
             b.Mass = r.OptionalFloat("mass");
             b.Density = r.OptionalFloat("density");
@@ -120,14 +112,8 @@ namespace Fulcrum.Scenes
         public static SceneShape? ReadShape(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a shape object");
-            if (r == null) return null;
-            string? type = r.String("type", required: true);
-            if (type == null) return null;
-            if (!SceneNames.TryParse(type, out SceneShapeType kind))
-            {
-                d.Add(JsonPath.Member(v.Path, "type"), $"unknown shape type '{type}' (expected sphere, box, capsule, convex, plane, mesh or compound)", v["type"]);
+            if (r == null || !r.Name("type", SceneNames.TryParse, "shape type", "sphere, box, capsule, convex, plane, mesh or compound", out SceneShapeType kind, required: true))
                 return null;
-            }
             SceneShape shape;
             switch (kind)
             {
