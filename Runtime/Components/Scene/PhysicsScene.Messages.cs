@@ -7,8 +7,7 @@ namespace Fulcrum.Components
 {
     public sealed partial class PhysicsScene
     {
-        Collider?[] _colliderBySlot = Array.Empty<Collider?>();
-        int[] _colliderGeneration = Array.Empty<int>();
+        readonly HandleOwners<Collider> _colliderOwners = new HandleOwners<Collider>();
         ContactEvent[] _events = new ContactEvent[64];
         int _eventCount;
         ContactEvent[] _injected = new ContactEvent[16];
@@ -23,23 +22,9 @@ namespace Fulcrum.Components
         /// The collider that owns <paramref name="shape"/>, or null. A shape removed since the
         /// last step still finds its (destroyed or disabled) collider, so end events can name it.
         /// </summary>
-        public Collider? GetCollider(ShapeHandle shape)
-        {
-            if (shape.IsNone || (uint)shape.Index >= (uint)_colliderBySlot.Length) return null;
-            return _colliderGeneration[shape.Index] == shape.Generation ? _colliderBySlot[shape.Index] : null;
-        }
+        public Collider? GetCollider(ShapeHandle shape) => _colliderOwners.Get(shape.Id);
 
-        internal void MapShape(ShapeHandle shape, Collider c)
-        {
-            if (shape.Index >= _colliderBySlot.Length)
-            {
-                int n = Math.Max(shape.Index + 1, Math.Max(16, _colliderBySlot.Length * 2));
-                Array.Resize(ref _colliderBySlot, n);
-                Array.Resize(ref _colliderGeneration, n);
-            }
-            _colliderBySlot[shape.Index] = c;
-            _colliderGeneration[shape.Index] = shape.Generation;
-        }
+        internal void MapShape(ShapeHandle shape, Collider c) => _colliderOwners.Set(shape.Id, c);
 
         // The entry stays until the slot is reused: end events for the shape still resolve.
         internal void UnmapShape(ShapeHandle shape) { }
