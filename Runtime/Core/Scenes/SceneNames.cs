@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Text;
 
 namespace Fulcrum.Scenes
 {
@@ -7,46 +8,61 @@ namespace Fulcrum.Scenes
     public static class SceneNames
     {
         // Each enumeration's values with their spellings, in scene-format order. Of and TryParse
-        // look both ways up in these tables; a value missing from a table (a cast out of range)
-        // is written as the table's last entry.
-        static readonly (BodyType Value, string Name)[] BodyTypes =
+        // look both ways up in these tables, and the reader lists their spellings when it meets
+        // an unknown one; a value missing from a table (a cast out of range) is written as the
+        // table's last entry.
+
+        /// <summary>Body types.</summary>
+        internal static readonly (BodyType Value, string Name)[] BodyTypes =
             { (BodyType.Static, "static"), (BodyType.Kinematic, "kinematic"), (BodyType.Dynamic, "dynamic") };
 
-        static readonly (SolverType Value, string Name)[] SolverTypes = { (SolverType.Pgs, "pgs"), (SolverType.Tgs, "tgs") };
+        /// <summary>Solver types.</summary>
+        internal static readonly (SolverType Value, string Name)[] SolverTypes = { (SolverType.Pgs, "pgs"), (SolverType.Tgs, "tgs") };
 
-        static readonly (SceneShapeType Value, string Name)[] ShapeTypes =
+        /// <summary>Shape types.</summary>
+        internal static readonly (SceneShapeType Value, string Name)[] ShapeTypes =
         {
             (SceneShapeType.Sphere, "sphere"), (SceneShapeType.Box, "box"), (SceneShapeType.Capsule, "capsule"),
             (SceneShapeType.Convex, "convex"), (SceneShapeType.Plane, "plane"), (SceneShapeType.Mesh, "mesh"),
             (SceneShapeType.Compound, "compound"),
         };
 
-        static readonly (JointKind Value, string Name)[] JointKinds =
+        /// <summary>Joint types.</summary>
+        internal static readonly (JointKind Value, string Name)[] JointKinds =
         {
             (JointKind.Ball, "ball"), (JointKind.Hinge, "hinge"), (JointKind.Distance, "distance"),
             (JointKind.Fixed, "fixed"), (JointKind.Prismatic, "prismatic"), (JointKind.ConeTwist, "coneTwist"),
         };
 
-        static readonly (SceneGeneratorType Value, string Name)[] GeneratorTypes =
+        /// <summary>Generator types.</summary>
+        internal static readonly (SceneGeneratorType Value, string Name)[] GeneratorTypes =
         {
             (SceneGeneratorType.Tower, "tower"), (SceneGeneratorType.Pyramid, "pyramid"), (SceneGeneratorType.Wall, "wall"),
             (SceneGeneratorType.Pile, "pile"), (SceneGeneratorType.Chain, "chain"), (SceneGeneratorType.Dominoes, "dominoes"),
         };
 
-        static readonly (SceneAxis Value, string Name)[] Axes = { (SceneAxis.X, "x"), (SceneAxis.Z, "z") };
+        /// <summary>Generator axes.</summary>
+        internal static readonly (SceneAxis Value, string Name)[] Axes = { (SceneAxis.X, "x"), (SceneAxis.Z, "z") };
 
-        static readonly (SceneChainAnchor Value, string Name)[] ChainAnchors =
+        /// <summary>Chain anchors.</summary>
+        internal static readonly (SceneChainAnchor Value, string Name)[] ChainAnchors =
             { (SceneChainAnchor.None, "none"), (SceneChainAnchor.First, "first"), (SceneChainAnchor.Both, "both") };
 
-        static readonly (SceneSoftModel Value, string Name)[] SoftModels =
+        /// <summary>Soft material models.</summary>
+        internal static readonly (SceneSoftModel Value, string Name)[] SoftModels =
             { (SceneSoftModel.StableNeoHookean, "stable-neo-hookean"), (SceneSoftModel.NeoHookean, "neo-hookean") };
 
-        static readonly (SceneSoftMeshType Value, string Name)[] SoftMeshTypes =
+        /// <summary>Soft mesh types (obj last: the spelling of an out-of-range value, as before).</summary>
+        internal static readonly (SceneSoftMeshType Value, string Name)[] SoftMeshTypes =
         {
             (SceneSoftMeshType.Box, "box"), (SceneSoftMeshType.Sphere, "sphere"), (SceneSoftMeshType.Capsule, "capsule"),
             (SceneSoftMeshType.Beam, "beam"), (SceneSoftMeshType.Cloth, "cloth"), (SceneSoftMeshType.TetGen, "tetgen"),
             (SceneSoftMeshType.Surface, "surface"), (SceneSoftMeshType.Obj, "obj"),
         };
+
+        /// <summary>The shapes a pile generator may be made of.</summary>
+        internal static readonly (SceneShapeType Value, string Name)[] PileShapes =
+            { (SceneShapeType.Box, "box"), (SceneShapeType.Sphere, "sphere"), (SceneShapeType.Capsule, "capsule") };
 
         /// <summary>The six single axes of <see cref="AxisLocks"/> in scene order, with their scene names.</summary>
         internal static readonly (AxisLocks Axis, string Name)[] LockAxes =
@@ -119,7 +135,8 @@ namespace Fulcrum.Scenes
             return table[table.Length - 1].Name;
         }
 
-        static bool ValueOf<T>((T Value, string Name)[] table, string s, T unknown, out T value) where T : struct, Enum
+        /// <summary>The value <paramref name="s"/> spells in <paramref name="table"/>; false (and <paramref name="unknown"/>) for a spelling not in it.</summary>
+        internal static bool ValueOf<T>((T Value, string Name)[] table, string s, T unknown, out T value) where T : struct, Enum
         {
             foreach ((T v, string name) in table)
                 if (s == name)
@@ -129,6 +146,15 @@ namespace Fulcrum.Scenes
                 }
             value = unknown;
             return false;
+        }
+
+        /// <summary>The spellings in <paramref name="table"/>, for messages: "x, y or z".</summary>
+        internal static string Spellings<T>((T Value, string Name)[] table) where T : struct, Enum
+        {
+            var sb = new StringBuilder();
+            for (int i = 0; i < table.Length; i++)
+                sb.Append(i == 0 ? "" : i == table.Length - 1 ? " or " : ", ").Append(table[i].Name);
+            return sb.ToString();
         }
     }
 }

@@ -124,18 +124,18 @@ namespace Fulcrum.Scenes
         }
 
         /// <summary>
-        /// A member that names one value of an enumeration, spelled as <paramref name="parse"/>
-        /// reads it (one of <see cref="SceneNames"/>' TryParse): true with the value; false when
-        /// absent (reported when required), not a string, or an unknown name, which is reported
-        /// with the spellings in <paramref name="expected"/>.
+        /// A member that names one value of an enumeration, spelled as in <paramref name="names"/>
+        /// (one of <see cref="SceneNames"/>' tables): true with the value; false when absent
+        /// (reported when required), not a string, or an unknown name, which is reported with the
+        /// table's spellings.
         /// </summary>
-        public bool Name<T>(string key, NameParser<T> parse, string what, string expected, out T value, bool required = false)
+        public bool Name<T>(string key, (T Value, string Name)[] names, string what, out T value, bool required = false) where T : struct, System.Enum
         {
-            value = default!;
+            value = default;
             string? name = String(key, required);
             if (name == null) return false;
-            if (parse(name, out value)) return true;
-            Unknown(key, what, name, expected);
+            if (SceneNames.ValueOf(names, name, default, out value)) return true;
+            Unknown(key, what, name, SceneNames.Spellings(names));
             return false;
         }
 

@@ -6,7 +6,7 @@ namespace Fulcrum.Scenes
         public static SceneGenerator? Read(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a generator object");
-            if (r == null || !r.Name("type", SceneNames.TryParse, "generator type", "tower, pyramid, wall, pile, chain or dominoes", out SceneGeneratorType kind, required: true))
+            if (r == null || !r.Name("type", SceneNames.GeneratorTypes, "generator type", out SceneGeneratorType kind, required: true))
                 return null;
             SceneGenerator g;
             switch (kind)
@@ -28,14 +28,14 @@ namespace Fulcrum.Scenes
                 {
                     var pile = new ScenePile();
                     if (r.Ints("grid", 3, required: true) is int[] grid) pile.Grid = grid;
-                    if (r.Name("shape", TryParsePileShape, "pile shape", "box, sphere or capsule", out SceneShapeType shape)) pile.Shape = shape;
+                    if (r.Name("shape", SceneNames.PileShapes, "pile shape", out SceneShapeType shape)) pile.Shape = shape;
                     g = pile;
                     break;
                 }
                 case SceneGeneratorType.Chain:
                 {
                     var chain = new SceneChain { Count = r.Int("count", 0, required: true), Axis = ReadAxis(r) };
-                    if (r.Name("anchor", SceneNames.TryParse, "anchor", "none, first or both", out SceneChainAnchor anchor)) chain.Anchor = anchor;
+                    if (r.Name("anchor", SceneNames.ChainAnchors, "anchor", out SceneChainAnchor anchor)) chain.Anchor = anchor;
                     g = chain;
                     break;
                 }
@@ -58,10 +58,6 @@ namespace Fulcrum.Scenes
         }
 
         static SceneAxis ReadAxis(JsonObjectReader r) =>
-            r.Name("axis", SceneNames.TryParse, "axis", "x or z", out SceneAxis a) ? a : SceneAxis.X;
-
-        // A pile is of boxes, spheres or capsules only.
-        static bool TryParsePileShape(string name, out SceneShapeType s) =>
-            SceneNames.TryParse(name, out s) && (s == SceneShapeType.Box || s == SceneShapeType.Sphere || s == SceneShapeType.Capsule);
+            r.Name("axis", SceneNames.Axes, "axis", out SceneAxis a) ? a : SceneAxis.X;
     }
 }

@@ -8,7 +8,7 @@ namespace Fulcrum.Scenes
         public static SceneJoint? Read(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a joint object");
-            if (r == null || !r.Name("type", SceneNames.TryParse, "joint type", "ball, hinge, distance, fixed, prismatic or coneTwist", out JointKind kind, required: true))
+            if (r == null || !r.Name("type", SceneNames.JointKinds, "joint type", out JointKind kind, required: true))
                 return null;
             SceneJoint joint;
             switch (kind)

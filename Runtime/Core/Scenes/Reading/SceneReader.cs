@@ -37,7 +37,7 @@ namespace Fulcrum.Scenes
             var s = new SceneSolver();
             JsonObjectReader? r = JsonObjectReader.Open(v, d);
             if (r == null) return s;
-            if (r.Name("type", SceneNames.TryParse, "solver", "pgs or tgs", out SolverType t)) s.Type = t;
+            if (r.Name("type", SceneNames.SolverTypes, "solver", out SolverType t)) s.Type = t;
             s.Iterations = r.Int("iterations", s.Iterations);
             s.Substeps = r.Int("substeps", s.Substeps);
             s.ContactHertz = r.OptionalFloat("contactHertz");
@@ -76,7 +76,7 @@ namespace Fulcrum.Scenes
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a body object");
             if (r == null) return null;
             var b = new SceneBody { Name = r.String("name", required: true) ?? "" };
-            if (r.Name("type", SceneNames.TryParse, "body type", "static, kinematic or dynamic", out BodyType t)) b.Type = t;
+            if (r.Name("type", SceneNames.BodyTypes, "body type", out BodyType t)) b.Type = t;
             if (r.Take("shape", required: true) is JsonValue shape) b.Shape = ReadShape(shape, d);
             b.Mass = r.OptionalFloat("mass");
             b.Density = r.OptionalFloat("density");
@@ -98,9 +98,9 @@ namespace Fulcrum.Scenes
             foreach (JsonValue item in items)
             {
                 if (item.Kind != JsonKind.String)
-                    d.Add(item.Path, $"expected an axis name (linearX, linearY, linearZ, angularX, angularY or angularZ), got {item.KindName}", item);
+                    d.Add(item.Path, $"expected an axis name ({SceneNames.Spellings(SceneNames.LockAxes)}), got {item.KindName}", item);
                 else if (!SceneNames.TryParse(item.AsString, out AxisLocks axis))
-                    d.Add(item.Path, $"unknown axis '{item.AsString}' (expected linearX, linearY, linearZ, angularX, angularY or angularZ)", item);
+                    d.Add(item.Path, $"unknown axis '{item.AsString}' (expected {SceneNames.Spellings(SceneNames.LockAxes)})", item);
                 else if ((locks & axis) != 0)
                     d.Add(item.Path, $"axis '{item.AsString}' is listed twice", item);
                 else locks |= axis;
@@ -112,7 +112,7 @@ namespace Fulcrum.Scenes
         public static SceneShape? ReadShape(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a shape object");
-            if (r == null || !r.Name("type", SceneNames.TryParse, "shape type", "sphere, box, capsule, convex, plane, mesh or compound", out SceneShapeType kind, required: true))
+            if (r == null || !r.Name("type", SceneNames.ShapeTypes, "shape type", out SceneShapeType kind, required: true))
                 return null;
             SceneShape shape;
             switch (kind)

@@ -58,7 +58,7 @@ namespace Fulcrum.Scenes
         static SceneSoftMesh? ReadMesh(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a mesh object");
-            if (r == null || !r.Name("type", SceneNames.TryParse, "soft mesh type", "box, sphere, capsule, beam, cloth, tetgen or obj", out SceneSoftMeshType kind, required: true))
+            if (r == null || !r.Name("type", SceneNames.SoftMeshTypes, "soft mesh type", out SceneSoftMeshType kind, required: true))
                 return null;
             SceneSoftMesh mesh;
             switch (kind)
@@ -134,7 +134,7 @@ namespace Fulcrum.Scenes
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a material object");
             if (r == null) return null;
             var m = new SceneSoftMaterial();
-            if (r.Name("model", SceneNames.TryParse, "model", "stable-neo-hookean or neo-hookean", out SceneSoftModel model)) m.Model = model;
+            if (r.Name("model", SceneNames.SoftModels, "model", out SceneSoftModel model)) m.Model = model;
             m.YoungsModulus = r.OptionalFloat("youngsModulus");
             m.PoissonRatio = r.OptionalFloat("poissonRatio");
             m.Mu = r.OptionalFloat("mu");
