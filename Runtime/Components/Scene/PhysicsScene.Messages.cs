@@ -90,25 +90,7 @@ namespace Fulcrum.Components
         {
             if (!Receives(self)) return;
             _dispatching = kind == ContactEventKind.Begin ? "OnTriggerEnter" : kind == ContactEventKind.Persist ? "OnTriggerStay" : "OnTriggerExit";
-            Entity e = self.entity;
-            SendTriggerTo(e, other, kind);
-            Rigidbody? rb = self.attachedRigidbody;
-            if (rb != null && rb.entity != e) SendTriggerTo(rb.entity, other, kind);
-        }
-
-        static void SendTriggerTo(Entity e, Collider other, ContactEventKind kind)
-        {
-            List<Component> cs = e.Components;
-            for (int k = 0; k < cs.Count; k++)
-            {
-                if (!(cs[k] is Behaviour b) || b.isDestroyed || !e.activeInHierarchy) continue;
-                switch (kind)
-                {
-                    case ContactEventKind.Begin: b.SendTriggerEnter(other); break;
-                    case ContactEventKind.Persist: b.SendTriggerStay(other); break;
-                    default: b.SendTriggerExit(other); break;
-                }
-            }
+            Send(self, other, kind, null);
         }
 
         void SendCollision(Collider self, Collider other, in ContactEvent e, Vector3 normalTowardsSelf, Vector3 relativeVelocity)
@@ -131,10 +113,26 @@ namespace Fulcrum.Components
                     otherCollider = other,
                 });
             }
-            Entity ent = self.entity;
-            SendCollisionTo(ent, c, e.Kind);
+            Send(self, other, e.Kind, c);
+        }
+
+        // One contact message (a collision with c, a trigger without) to the behaviours on self's
+        // entity, then on its rigidbody's entity when that is another one: a child collider's
+        // messages reach the body's scripts too, as in Unity.
+        static void Send(Collider self, Collider other, ContactEventKind kind, Collision? c)
+        {
+            Entity e = self.entity;
+            SendTo(e, other, kind, c);
             Rigidbody? rb = self.attachedRigidbody;
-            if (rb != null && rb.entity != ent) SendCollisionTo(rb.entity, c, e.Kind);
+            if (rb != null && rb.entity != e) SendTo(rb.entity, other, kind, c);
+        }
+
+        // Each behaviour still live when its turn comes (an earlier one may destroy or deactivate).
+        static void SendTo(Entity e, Collider other, ContactEventKind kind, Collision? c)
+        {
+            List<Component> cs = e.Components;
+            for (int k = 0; k < cs.Count; k++)
+                if (cs[k] is Behaviour b && !b.isDestroyed && e.activeInHierarchy) b.SendContact(kind, other, c);
         }
 
         // Copies the points of the pair's manifolds, seen from self; false when the world has no
@@ -164,21 +162,6 @@ namespace Fulcrum.Components
                 }
             }
             return true;
-        }
-
-        static void SendCollisionTo(Entity e, Collision c, ContactEventKind kind)
-        {
-            List<Component> cs = e.Components;
-            for (int k = 0; k < cs.Count; k++)
-            {
-                if (!(cs[k] is Behaviour b) || b.isDestroyed || !e.activeInHierarchy) continue;
-                switch (kind)
-                {
-                    case ContactEventKind.Begin: b.SendCollisionEnter(c); break;
-                    case ContactEventKind.Persist: b.SendCollisionStay(c); break;
-                    default: b.SendCollisionExit(c); break;
-                }
-            }
         }
 
         // A destroyed entity hears nothing more; an inactive one neither (its shapes are gone).
