@@ -1,4 +1,5 @@
 #nullable enable
+using System;
 using System.Collections.Generic;
 using UnityEngine;
 using F = Fulcrum.Components;
@@ -30,53 +31,33 @@ namespace Fulcrum.Unity
             return list;
         }
 
-        /// <inheritdoc/>
-        protected override void OnCollisionEnter(F.Collision c)
+        // Hands one message to each receiver of its kind. The lambdas passed in capture nothing
+        // (static), so the compiler caches them: no delegate is allocated per message.
+        void Relay<THandler, TMessage>(List<THandler> list, TMessage message, Action<THandler, TMessage> deliver)
         {
-            List<IFulcrumCollisionHandler> h = Handlers(_collision);
-            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionEnter(c);
+            List<THandler> h = Handlers(list);
+            for (int i = 0; i < h.Count; i++) deliver(h[i], message);
         }
 
         /// <inheritdoc/>
-        protected override void OnCollisionStay(F.Collision c)
-        {
-            List<IFulcrumCollisionHandler> h = Handlers(_collision);
-            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionStay(c);
-        }
+        protected override void OnCollisionEnter(F.Collision c) => Relay(_collision, c, static (h, m) => h.OnFulcrumCollisionEnter(m));
 
         /// <inheritdoc/>
-        protected override void OnCollisionExit(F.Collision c)
-        {
-            List<IFulcrumCollisionHandler> h = Handlers(_collision);
-            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumCollisionExit(c);
-        }
+        protected override void OnCollisionStay(F.Collision c) => Relay(_collision, c, static (h, m) => h.OnFulcrumCollisionStay(m));
 
         /// <inheritdoc/>
-        protected override void OnTriggerEnter(F.Collider other)
-        {
-            List<IFulcrumTriggerHandler> h = Handlers(_trigger);
-            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerEnter(other);
-        }
+        protected override void OnCollisionExit(F.Collision c) => Relay(_collision, c, static (h, m) => h.OnFulcrumCollisionExit(m));
 
         /// <inheritdoc/>
-        protected override void OnTriggerStay(F.Collider other)
-        {
-            List<IFulcrumTriggerHandler> h = Handlers(_trigger);
-            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerStay(other);
-        }
+        protected override void OnTriggerEnter(F.Collider other) => Relay(_trigger, other, static (h, m) => h.OnFulcrumTriggerEnter(m));
 
         /// <inheritdoc/>
-        protected override void OnTriggerExit(F.Collider other)
-        {
-            List<IFulcrumTriggerHandler> h = Handlers(_trigger);
-            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumTriggerExit(other);
-        }
+        protected override void OnTriggerStay(F.Collider other) => Relay(_trigger, other, static (h, m) => h.OnFulcrumTriggerStay(m));
 
         /// <inheritdoc/>
-        protected override void OnJointBreak(float breakForce)
-        {
-            List<IFulcrumJointBreakHandler> h = Handlers(_jointBreak);
-            for (int i = 0; i < h.Count; i++) h[i].OnFulcrumJointBreak(breakForce);
-        }
+        protected override void OnTriggerExit(F.Collider other) => Relay(_trigger, other, static (h, m) => h.OnFulcrumTriggerExit(m));
+
+        /// <inheritdoc/>
+        protected override void OnJointBreak(float breakForce) => Relay(_jointBreak, breakForce, static (h, m) => h.OnFulcrumJointBreak(m));
     }
 }

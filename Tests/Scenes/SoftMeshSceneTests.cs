@@ -75,7 +75,7 @@ namespace Fulcrum.Tests.Scenes
         [TestCase("{ \"type\": \"tetgen\", \"node\": \" \", \"ele\": \"a.ele\" }", "$.softBodies[0].mesh.node: must be a non-empty file path")]
         [TestCase("{ \"type\": \"obj\" }", "$.softBodies[0].mesh.file: missing required field")]
         [TestCase("{ \"type\": \"box\", \"size\": [1, 1, 1], \"split\": \"seven\" }", "$.softBodies[0].mesh.split: unknown split 'seven' (expected six, six-mirrored or five)")]
-        [TestCase("{ \"type\": \"torus\", \"radius\": 1 }", "$.softBodies[0].mesh.type: unknown soft mesh type 'torus' (expected box, sphere, capsule, beam, cloth, tetgen or obj)")]
+        [TestCase("{ \"type\": \"torus\", \"radius\": 1 }", "$.softBodies[0].mesh.type: unknown soft mesh type 'torus' (expected box, sphere, capsule, beam, cloth, tetgen, surface or obj)")]
         public void A_bad_mesh_field_is_one_error_at_its_path(string mesh, string expected)
         {
             Assert.That(Errors(Scene(mesh)), Is.EqualTo(new[] { expected }));

@@ -93,7 +93,7 @@ namespace Fulcrum.Components
             get => _breakForce;
             set
             {
-                if (!(value > 0) || float.IsNaN(value)) throw new ArgumentException($"{this}: breakForce must be > 0 (infinity for unbreakable), got {value}.", nameof(breakForce));
+                FieldCheck.BreakLimit(value, this, nameof(breakForce));
                 ThrowIfStepping(nameof(breakForce));
                 _breakForce = value;
                 if (!_joint.IsNone) scene.world.Joints.Data[_joint.Index].BreakForce = value;
@@ -106,7 +106,7 @@ namespace Fulcrum.Components
             get => _breakTorque;
             set
             {
-                if (!(value > 0) || float.IsNaN(value)) throw new ArgumentException($"{this}: breakTorque must be > 0 (infinity for unbreakable), got {value}.", nameof(breakTorque));
+                FieldCheck.BreakLimit(value, this, nameof(breakTorque));
                 ThrowIfStepping(nameof(breakTorque));
                 _breakTorque = value;
                 if (!_joint.IsNone) scene.world.Joints.Data[_joint.Index].BreakTorque = value;
@@ -211,13 +211,6 @@ namespace Fulcrum.Components
             if (_joint.IsNone) return;
             Unbuild();
             TryBuild();
-        }
-
-        internal void ThrowIfStepping(string member)
-        {
-            ThrowIfDestroyed();
-            if (entity.scene.world.IsStepping)
-                throw new InvalidOperationException($"{this}: {member} cannot be changed while the world steps (from a callback inside World.Step); do it in FixedUpdate or in a collision message, which run after the step.");
         }
     }
 }

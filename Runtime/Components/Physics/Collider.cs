@@ -1,4 +1,3 @@
-using System;
 using System.Numerics;
 using Fulcrum.Mathematics;
 
@@ -232,13 +231,6 @@ namespace Fulcrum.Components
             def.Restitution = m?.bounciness ?? 0f;
             def.FrictionCombine = m?.frictionCombine ?? CombineMode.Average;
             def.RestitutionCombine = m?.bounceCombine ?? CombineMode.Average;
-        }
-
-        internal void ThrowIfStepping(string member)
-        {
-            ThrowIfDestroyed();
-            if (entity.scene.world.IsStepping)
-                throw new InvalidOperationException($"{this}: {member} cannot be changed while the world steps (from a callback inside World.Step); do it in FixedUpdate or in a collision message, which run after the step.");
         }
     }
 }

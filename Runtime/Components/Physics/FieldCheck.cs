@@ -62,6 +62,12 @@ namespace Fulcrum.Components
             if (!(float.IsFinite(v) && v > 0)) throw new ArgumentException($"{owner}: {field} must be finite and > 0, got {v}.", field);
         }
 
+        /// <summary>Throws unless <paramref name="v"/> is a joint's breaking force or torque: &gt; 0, infinity for unbreakable.</summary>
+        public static void BreakLimit(float v, object owner, string field)
+        {
+            if (!(v > 0) || float.IsNaN(v)) throw new ArgumentException($"{owner}: {field} must be > 0 (infinity for unbreakable), got {v}.", field);
+        }
+
         /// <summary>Throws unless <paramref name="v"/> is finite and &gt;= 0.</summary>
         public static void NonNegative(float v, object owner, string field)
         {

@@ -415,12 +415,5 @@ namespace Fulcrum.Components
             transform.SetWorldPoseSilently(pose);
             SeenTransformVersion = transform.HierarchyVersion;
         }
-
-        internal void ThrowIfStepping(string member)
-        {
-            ThrowIfDestroyed();
-            if (entity.scene.world.IsStepping)
-                throw new InvalidOperationException($"{this}: {member} cannot be changed while the world steps (from a callback inside World.Step); do it in FixedUpdate or in a collision message, which run after the step.");
-        }
     }
 }

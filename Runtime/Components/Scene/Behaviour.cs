@@ -1,3 +1,5 @@
+using Fulcrum.Collision;
+
 namespace Fulcrum.Components
 {
     /// <summary>
@@ -132,12 +134,24 @@ namespace Fulcrum.Components
         }
 
         internal void RunFixedUpdate() => FixedUpdate();
-        internal void SendCollisionEnter(Collision c) => OnCollisionEnter(c);
-        internal void SendCollisionStay(Collision c) => OnCollisionStay(c);
-        internal void SendCollisionExit(Collision c) => OnCollisionExit(c);
-        internal void SendTriggerEnter(Collider other) => OnTriggerEnter(other);
-        internal void SendTriggerStay(Collider other) => OnTriggerStay(other);
-        internal void SendTriggerExit(Collider other) => OnTriggerExit(other);
+
+        /// <summary>
+        /// One contact message of <paramref name="kind"/>: OnCollisionEnter/Stay/Exit with
+        /// <paramref name="collision"/> when there is one, OnTriggerEnter/Stay/Exit with
+        /// <paramref name="other"/> otherwise.
+        /// </summary>
+        internal void SendContact(ContactEventKind kind, Collider other, Collision? collision)
+        {
+            if (collision != null)
+            {
+                if (kind == ContactEventKind.Begin) OnCollisionEnter(collision);
+                else if (kind == ContactEventKind.Persist) OnCollisionStay(collision);
+                else OnCollisionExit(collision);
+            }
+            else if (kind == ContactEventKind.Begin) OnTriggerEnter(other);
+            else if (kind == ContactEventKind.Persist) OnTriggerStay(other);
+            else OnTriggerExit(other);
+        }
         internal void SendJointBreak(float force) => OnJointBreak(force);
         internal void RunUpdate() => Update();
         internal void RunLateUpdate() => LateUpdate();

@@ -43,6 +43,17 @@ namespace Fulcrum.Components
             if (isDestroyed) throw new InvalidOperationException($"{this} has been destroyed.");
         }
 
+        /// <summary>
+        /// Refuses a change to <paramref name="member"/> of a destroyed component, or one made
+        /// while the world steps: the step reads the settings it started with.
+        /// </summary>
+        internal void ThrowIfStepping(string member)
+        {
+            ThrowIfDestroyed();
+            if (entity.scene.world.IsStepping)
+                throw new InvalidOperationException($"{this}: {member} cannot be changed while the world steps (from a callback inside World.Step); do it in FixedUpdate or in a collision message, which run after the step.");
+        }
+
         /// <summary>True when the entity is active in the hierarchy and the component not destroyed.</summary>
         internal bool IsLive => _entity != null && !isDestroyed && _entity.activeInHierarchy;
 

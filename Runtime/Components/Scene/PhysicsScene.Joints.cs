@@ -6,8 +6,7 @@ namespace Fulcrum.Components
     public sealed partial class PhysicsScene
     {
         readonly List<Joint> _joints = new List<Joint>();
-        Joint?[] _jointBySlot = Array.Empty<Joint?>();
-        int[] _jointGeneration = Array.Empty<int>();
+        readonly HandleOwners<Joint> _jointOwners = new HandleOwners<Joint>();
 
         internal void RegisterJoint(Joint j)
         {
@@ -16,24 +15,10 @@ namespace Fulcrum.Components
 
         internal void UnregisterJoint(Joint j) => _needsCompaction = true;
 
-        internal void MapJoint(JointHandle handle, Joint j)
-        {
-            if (handle.Index >= _jointBySlot.Length)
-            {
-                int n = Math.Max(handle.Index + 1, Math.Max(16, _jointBySlot.Length * 2));
-                Array.Resize(ref _jointBySlot, n);
-                Array.Resize(ref _jointGeneration, n);
-            }
-            _jointBySlot[handle.Index] = j;
-            _jointGeneration[handle.Index] = handle.Generation;
-        }
+        internal void MapJoint(JointHandle handle, Joint j) => _jointOwners.Set(handle.Id, j);
 
         /// <summary>The joint component that owns <paramref name="handle"/>, or null.</summary>
-        public Joint? GetJoint(JointHandle handle)
-        {
-            if (handle.IsNone || (uint)handle.Index >= (uint)_jointBySlot.Length) return null;
-            return _jointGeneration[handle.Index] == handle.Generation ? _jointBySlot[handle.Index] : null;
-        }
+        public Joint? GetJoint(JointHandle handle) => _jointOwners.Get(handle.Id);
 
         // Joints whose bodies appeared since (a connected entity activated later) get built;
         // those whose body went away are rebuilt when it comes back.

@@ -7,8 +7,7 @@ namespace Fulcrum.Components
 {
     public sealed partial class PhysicsScene
     {
-        Collider?[] _colliderBySlot = Array.Empty<Collider?>();
-        int[] _colliderGeneration = Array.Empty<int>();
+        readonly HandleOwners<Collider> _colliderOwners = new HandleOwners<Collider>();
         ContactEvent[] _events = new ContactEvent[64];
         int _eventCount;
         ContactEvent[] _injected = new ContactEvent[16];
@@ -23,23 +22,9 @@ namespace Fulcrum.Components
         /// The collider that owns <paramref name="shape"/>, or null. A shape removed since the
         /// last step still finds its (destroyed or disabled) collider, so end events can name it.
         /// </summary>
-        public Collider? GetCollider(ShapeHandle shape)
-        {
-            if (shape.IsNone || (uint)shape.Index >= (uint)_colliderBySlot.Length) return null;
-            return _colliderGeneration[shape.Index] == shape.Generation ? _colliderBySlot[shape.Index] : null;
-        }
+        public Collider? GetCollider(ShapeHandle shape) => _colliderOwners.Get(shape.Id);
 
-        internal void MapShape(ShapeHandle shape, Collider c)
-        {
-            if (shape.Index >= _colliderBySlot.Length)
-            {
-                int n = Math.Max(shape.Index + 1, Math.Max(16, _colliderBySlot.Length * 2));
-                Array.Resize(ref _colliderBySlot, n);
-                Array.Resize(ref _colliderGeneration, n);
-            }
-            _colliderBySlot[shape.Index] = c;
-            _colliderGeneration[shape.Index] = shape.Generation;
-        }
+        internal void MapShape(ShapeHandle shape, Collider c) => _colliderOwners.Set(shape.Id, c);
 
         // The entry stays until the slot is reused: end events for the shape still resolve.
         internal void UnmapShape(ShapeHandle shape) { }
@@ -105,25 +90,7 @@ namespace Fulcrum.Components
         {
             if (!Receives(self)) return;
             _dispatching = kind == ContactEventKind.Begin ? "OnTriggerEnter" : kind == ContactEventKind.Persist ? "OnTriggerStay" : "OnTriggerExit";
-            Entity e = self.entity;
-            SendTriggerTo(e, other, kind);
-            Rigidbody? rb = self.attachedRigidbody;
-            if (rb != null && rb.entity != e) SendTriggerTo(rb.entity, other, kind);
-        }
-
-        static void SendTriggerTo(Entity e, Collider other, ContactEventKind kind)
-        {
-            List<Component> cs = e.Components;
-            for (int k = 0; k < cs.Count; k++)
-            {
-                if (!(cs[k] is Behaviour b) || b.isDestroyed || !e.activeInHierarchy) continue;
-                switch (kind)
-                {
-                    case ContactEventKind.Begin: b.SendTriggerEnter(other); break;
-                    case ContactEventKind.Persist: b.SendTriggerStay(other); break;
-                    default: b.SendTriggerExit(other); break;
-                }
-            }
+            Send(self, other, kind, null);
         }
 
         void SendCollision(Collider self, Collider other, in ContactEvent e, Vector3 normalTowardsSelf, Vector3 relativeVelocity)
@@ -146,10 +113,26 @@ namespace Fulcrum.Components
                     otherCollider = other,
                 });
             }
-            Entity ent = self.entity;
-            SendCollisionTo(ent, c, e.Kind);
+            Send(self, other, e.Kind, c);
+        }
+
+        // One contact message (a collision with c, a trigger without) to the behaviours on self's
+        // entity, then on its rigidbody's entity when that is another one: a child collider's
+        // messages reach the body's scripts too, as in Unity.
+        static void Send(Collider self, Collider other, ContactEventKind kind, Collision? c)
+        {
+            Entity e = self.entity;
+            SendTo(e, other, kind, c);
             Rigidbody? rb = self.attachedRigidbody;
-            if (rb != null && rb.entity != ent) SendCollisionTo(rb.entity, c, e.Kind);
+            if (rb != null && rb.entity != e) SendTo(rb.entity, other, kind, c);
+        }
+
+        // Each behaviour still live when its turn comes (an earlier one may destroy or deactivate).
+        static void SendTo(Entity e, Collider other, ContactEventKind kind, Collision? c)
+        {
+            List<Component> cs = e.Components;
+            for (int k = 0; k < cs.Count; k++)
+                if (cs[k] is Behaviour b && !b.isDestroyed && e.activeInHierarchy) b.SendContact(kind, other, c);
         }
 
         // Copies the points of the pair's manifolds, seen from self; false when the world has no
@@ -179,21 +162,6 @@ namespace Fulcrum.Components
                 }
             }
             return true;
-        }
-
-        static void SendCollisionTo(Entity e, Collision c, ContactEventKind kind)
-        {
-            List<Component> cs = e.Components;
-            for (int k = 0; k < cs.Count; k++)
-            {
-                if (!(cs[k] is Behaviour b) || b.isDestroyed || !e.activeInHierarchy) continue;
-                switch (kind)
-                {
-                    case ContactEventKind.Begin: b.SendCollisionEnter(c); break;
-                    case ContactEventKind.Persist: b.SendCollisionStay(c); break;
-                    default: b.SendCollisionExit(c); break;
-                }
-            }
         }
 
         // A destroyed entity hears nothing more; an inactive one neither (its shapes are gone).

@@ -97,12 +97,5 @@ namespace Fulcrum.Components
             Remove();
             Build();
         }
-
-        void ThrowIfStepping(string member)
-        {
-            ThrowIfDestroyed();
-            if (entity.scene.world.IsStepping)
-                throw new InvalidOperationException($"{this}: {member} cannot be changed while the world steps (from a callback inside World.Step).");
-        }
     }
 }

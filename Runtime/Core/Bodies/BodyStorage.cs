@@ -74,42 +74,8 @@ namespace Fulcrum
 
         void Grow(int capacity)
         {
-            Array.Resize(ref Position, capacity);
-            Array.Resize(ref Rotation, capacity);
-            Array.Resize(ref Center, capacity);
-            Array.Resize(ref LinearVelocity, capacity);
-            Array.Resize(ref AngularVelocity, capacity);
-            Array.Resize(ref InverseMass, capacity);
-            Array.Resize(ref InverseInertiaWorld, capacity);
-            Array.Resize(ref Type, capacity);
-            Array.Resize(ref Awake, capacity);
-            Array.Resize(ref Force, capacity);
-            Array.Resize(ref Torque, capacity);
-            Array.Resize(ref InverseInertiaPrincipal, capacity);
-            Array.Resize(ref InertiaFrame, capacity);
-            Array.Resize(ref LocalCenter, capacity);
-            Array.Resize(ref Radius, capacity);
-            Array.Resize(ref LinearDamping, capacity);
-            Array.Resize(ref AngularDamping, capacity);
-            Array.Resize(ref GravityScale, capacity);
-            Array.Resize(ref Locks, capacity);
-            Array.Resize(ref PreviousPosition, capacity);
-            Array.Resize(ref PreviousRotation, capacity);
-            Array.Resize(ref StartLinearVelocity, capacity);
-            Array.Resize(ref StartAngularVelocity, capacity);
-            Array.Resize(ref Mass, capacity);
-            Array.Resize(ref InertiaLocal, capacity);
-            Array.Resize(ref MassOverride, capacity);
-            Array.Resize(ref AllowSleep, capacity);
-            Array.Resize(ref Ccd, capacity);
-            Array.Resize(ref SleepTime, capacity);
-            Array.Resize(ref HasKinematicTarget, capacity);
-            Array.Resize(ref VelocityFromTarget, capacity);
-            Array.Resize(ref TargetPosition, capacity);
-            Array.Resize(ref TargetRotation, capacity);
-            Array.Resize(ref FirstShape, capacity);
-            Array.Resize(ref Name, capacity);
-            Array.Resize(ref UserData, capacity);
+            var columns = new ColumnResize(capacity);
+            Columns(ref columns);
         }
 
         /// <summary>

@@ -125,16 +125,7 @@ namespace Fulcrum.Collision
             for (int m = 0; m < 3 && lo <= hi; m++)
             {
                 if (m == k) continue;
-                float pm = m == 0 ? p0.X : m == 1 ? p0.Y : p0.Z;
-                float dm = m == 0 ? d.X : m == 1 ? d.Y : d.Z;
-                float hm = m == 0 ? h.X : m == 1 ? h.Y : h.Z;
-                if (MathF.Abs(dm) < 1e-9f)
-                {
-                    if (pm < -hm || pm > hm) return false;
-                    continue;
-                }
-                float t0 = (-hm - pm) / dm, t1 = (hm - pm) / dm;
-                if (t0 > t1) (t0, t1) = (t1, t0);
+                if (!Slab.Cross(p0, d, h, m, 1e-9f, out float t0, out float t1, out _)) return false;
                 lo = MathF.Max(lo, t0);
                 hi = MathF.Min(hi, t1);
             }

@@ -261,37 +261,27 @@ namespace Fulcrum.Collision
         {
             ref TreeNode na = ref _nodes[a];
             int b = na.Child1, c = na.Child2;
-            ref TreeNode nb = ref _nodes[b];
-            ref TreeNode nc = ref _nodes[c];
-            if (nb.Height < 1 && nc.Height < 1) return;
-
             float bestGain = 0;
-            int choice = 0;
-            if (nc.Height > 0)
-            {
-                float area = nc.Box.SurfaceArea;
-                Aabb f = _nodes[nc.Child1].Box, g = _nodes[nc.Child2].Box;
-                float gainBF = area - Aabb.Union(nb.Box, g).SurfaceArea;   // B <-> F
-                float gainBG = area - Aabb.Union(nb.Box, f).SurfaceArea;   // B <-> G
-                if (gainBF > bestGain) { bestGain = gainBF; choice = 1; }
-                if (gainBG > bestGain) { bestGain = gainBG; choice = 2; }
-            }
-            if (nb.Height > 0)
-            {
-                float area = nb.Box.SurfaceArea;
-                Aabb d = _nodes[nb.Child1].Box, e = _nodes[nb.Child2].Box;
-                float gainCD = area - Aabb.Union(nc.Box, e).SurfaceArea;   // C <-> D
-                float gainCE = area - Aabb.Union(nc.Box, d).SurfaceArea;   // C <-> E
-                if (gainCD > bestGain) { bestGain = gainCD; choice = 3; }
-                if (gainCE > bestGain) { choice = 4; }
-            }
-            switch (choice)
-            {
-                case 1: SwapIntoSibling(a, b, c, true); break;
-                case 2: SwapIntoSibling(a, b, c, false); break;
-                case 3: SwapIntoSibling(a, c, b, true); break;
-                case 4: SwapIntoSibling(a, c, b, false); break;
-            }
+            int outer = -1, inner = -1;
+            bool first = false;
+            ConsiderSwaps(b, c, ref bestGain, ref outer, ref inner, ref first);   // B <-> F, B <-> G
+            ConsiderSwaps(c, b, ref bestGain, ref outer, ref inner, ref first);   // C <-> D, C <-> E
+            if (outer >= 0) SwapIntoSibling(a, outer, inner, first);
+        }
+
+        // Swapping "outer" with a child of its sibling "inner" changes only inner's box, which
+        // then holds outer and inner's other child: the gain is the area inner loses. Records
+        // each of the two swaps that beats the best gain so far (first child, then second).
+        void ConsiderSwaps(int outer, int inner, ref float bestGain, ref int bestOuter, ref int bestInner, ref bool bestFirst)
+        {
+            ref readonly TreeNode ni = ref _nodes[inner];
+            if (ni.Height <= 0) return;
+            float area = ni.Box.SurfaceArea;
+            Aabb moved = _nodes[outer].Box;
+            float gainFirst = area - Aabb.Union(moved, _nodes[ni.Child2].Box).SurfaceArea;
+            float gainSecond = area - Aabb.Union(moved, _nodes[ni.Child1].Box).SurfaceArea;
+            if (gainFirst > bestGain) { bestGain = gainFirst; bestOuter = outer; bestInner = inner; bestFirst = true; }
+            if (gainSecond > bestGain) { bestGain = gainSecond; bestOuter = outer; bestInner = inner; bestFirst = false; }
         }
 
         // Swaps the child "outer" of A with the first (or second) child of A's other child

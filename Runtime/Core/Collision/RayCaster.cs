@@ -56,18 +56,8 @@ namespace Fulcrum.Collision
             float sign = 0;
             for (int k = 0; k < 3; k++)
             {
-                float ok = k == 0 ? o.X : k == 1 ? o.Y : o.Z;
-                float dk = k == 0 ? d.X : k == 1 ? d.Y : d.Z;
-                float hk = k == 0 ? h.X : k == 1 ? h.Y : h.Z;
-                if (MathF.Abs(dk) < 1e-12f)
-                {
-                    if (ok < -hk || ok > hk) return false;
-                    continue;
-                }
-                float t1 = (-hk - ok) / dk, t2 = (hk - ok) / dk;
-                float s = -1;
-                if (t1 > t2) { (t1, t2) = (t2, t1); s = 1; }
-                if (t1 > enter) { enter = t1; axis = k; sign = s; }
+                if (!Slab.Cross(o, d, h, k, 1e-12f, out float t1, out float t2, out bool atPlus)) return false;
+                if (t1 > enter) { enter = t1; axis = k; sign = atPlus ? 1 : -1; }
                 exit = MathF.Min(exit, t2);
             }
             if (axis < 0 || enter < 0 || enter > exit) return false;

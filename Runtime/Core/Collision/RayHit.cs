@@ -3,7 +3,7 @@ using System.Numerics;
 namespace Fulcrum.Collision
 {
     /// <summary>Where a ray met a shape.</summary>
-    public struct RayHit
+    public struct RayHit : IQueryHit
     {
         /// <summary>The shape hit.</summary>
         public ShapeHandle Shape;
@@ -15,5 +15,8 @@ namespace Fulcrum.Collision
         public Vector3 Normal;
         /// <summary>Distance from the ray origin to the hit point, metres.</summary>
         public float Distance;
+
+        float IQueryHit.Distance => Distance;
+        ShapeHandle IQueryHit.Shape => Shape;
     }
 }

@@ -1,4 +1,3 @@
-using System;
 using System.Numerics;
 
 namespace Fulcrum.Collision
@@ -40,21 +39,12 @@ namespace Fulcrum.Collision
             if (!All)
             {
                 // Equal distances: the lower slot wins, whatever the tree order.
-                if (!HasHit || t < Best.Distance || (t == Best.Distance && shape < Best.Shape.Index)) Best = hit;
+                if (!HasHit || NearestHits.Before(hit, Best)) Best = hit;
                 HasHit = true;
                 return t / Length;
             }
-            // Insertion into the sorted prefix, dropping the farthest once full.
-            int kept = Math.Min(Found, Capacity);
-            Found++;
-            int at = kept;
-            while (at > 0 && Before(hit, Hits[at - 1])) at--;
-            if (at >= Capacity) return maxFraction;
-            for (int i = Math.Min(kept, Capacity - 1); i > at; i--) Hits[i] = Hits[i - 1];
-            Hits[at] = hit;
+            NearestHits.Insert(Hits, Capacity, ref Found, hit);
             return maxFraction;
         }
-
-        static bool Before(in RayHit a, in RayHit b) => a.Distance < b.Distance || (a.Distance == b.Distance && a.Shape.Index < b.Shape.Index);
     }
 }

@@ -3,7 +3,7 @@ using System.Numerics;
 namespace Fulcrum.Collision
 {
     /// <summary>Where a swept shape first touched another.</summary>
-    public struct ShapeCastHit
+    public struct ShapeCastHit : IQueryHit
     {
         /// <summary>The shape hit.</summary>
         public ShapeHandle Shape;
@@ -15,5 +15,8 @@ namespace Fulcrum.Collision
         public Vector3 Normal;
         /// <summary>How far the cast shape travelled before touching, metres.</summary>
         public float Distance;
+
+        float IQueryHit.Distance => Distance;
+        ShapeHandle IQueryHit.Shape => Shape;
     }
 }

@@ -63,21 +63,13 @@ namespace Fulcrum.Collision
             };
             if (!All)
             {
-                if (!HasHit || h.Distance < Best.Distance || (h.Distance == Best.Distance && shape < Best.Shape.Index)) Best = h;
+                if (!HasHit || NearestHits.Before(h, Best)) Best = h;
                 HasHit = true;
                 return true;
             }
-            int kept = Math.Min(Found, Capacity);
-            Found++;
-            int at = kept;
-            while (at > 0 && Before(h, Hits[at - 1])) at--;
-            if (at >= Capacity) return true;
-            for (int i = Math.Min(kept, Capacity - 1); i > at; i--) Hits[i] = Hits[i - 1];
-            Hits[at] = h;
+            NearestHits.Insert(Hits, Capacity, ref Found, h);
             return true;
         }
-
-        static bool Before(in ShapeCastHit a, in ShapeCastHit b) => a.Distance < b.Distance || (a.Distance == b.Distance && a.Shape.Index < b.Shape.Index);
 
         struct TriangleSweep : ITreeOverlapCallback
         {

@@ -92,6 +92,17 @@ namespace Fulcrum.Dynamics
             Rotate(InverseInertia * Vector3.Cross(r, p));
         }
 
+        /// <summary>
+        /// Stores velocities a solver worked on in local copies; only a dynamic body takes them
+        /// (a static or kinematic body's velocities are the solver's input, never its output).
+        /// </summary>
+        public void StoreVelocities(Vector3 linear, Vector3 angular)
+        {
+            if (IsDynamic == 0) return;
+            LinearVelocity = linear;
+            AngularVelocity = angular;
+        }
+
         /// <summary>Turns the body by the rotation vector <paramref name="angle"/> (rad), world axes.</summary>
         public void Rotate(Vector3 angle)
         {

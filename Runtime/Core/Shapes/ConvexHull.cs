@@ -177,27 +177,20 @@ namespace Fulcrum
         }
 
         /// <summary>The vertex farthest along a direction in the shape frame.</summary>
-        internal int SupportIndex(Vector3 direction)
-        {
-            int best = 0;
-            float max = Vector3.Dot(Vertices[0], direction);
-            for (int i = 1; i < Vertices.Length; i++)
-            {
-                float d = Vector3.Dot(Vertices[i], direction);
-                if (d > max) { max = d; best = i; }
-            }
-            return best;
-        }
+        internal int SupportIndex(Vector3 direction) => Farthest(Vertices, direction);
 
         /// <summary>The face whose outward normal is most aligned with a shape-frame direction.</summary>
-        internal int SupportFace(Vector3 direction)
+        internal int SupportFace(Vector3 direction) => Farthest(FaceNormals, direction);
+
+        // The index of the vector with the largest dot product with the direction (the first on a tie).
+        static int Farthest(Vector3[] vectors, Vector3 direction)
         {
             int best = 0;
-            float max = Vector3.Dot(FaceNormals[0], direction);
-            for (int f = 1; f < FaceNormals.Length; f++)
+            float max = Vector3.Dot(vectors[0], direction);
+            for (int i = 1; i < vectors.Length; i++)
             {
-                float d = Vector3.Dot(FaceNormals[f], direction);
-                if (d > max) { max = d; best = f; }
+                float d = Vector3.Dot(vectors[i], direction);
+                if (d > max) { max = d; best = i; }
             }
             return best;
         }

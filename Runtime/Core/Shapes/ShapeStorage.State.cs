@@ -36,20 +36,8 @@ namespace Fulcrum
             }
             _slots.Save(w);
             for (int i = 0; i < n; i++) Geometry[i].WriteState(w, dataOf[i]);
-            w.WriteArray(LocalPose, n);
-            w.WriteArray(Body, n);
-            w.WriteArray(NextInBody, n);
-            w.WriteArray(Density, n);
-            w.WriteArray(Friction, n);
-            w.WriteArray(Restitution, n);
-            w.WriteArray(FrictionCombine, n);
-            w.WriteArray(RestitutionCombine, n);
-            w.WriteArray(IsSensor, n);
-            w.WriteArray(Layer, n);
-            w.WriteArray(CollidesWith, n);
-            w.WriteArray(UserData, n);
-            w.WriteArray(WorldAabb, n);
-            w.WriteArray(ProxyId, n);
+            var columns = new ColumnWriter(w, n);
+            Columns(ref columns);
         }
 
         /// <summary>Reads what <see cref="Save"/> wrote into a new storage at the saved capacity.</summary>
@@ -69,21 +57,29 @@ namespace Fulcrum
             int n = s.SlotCount, c = s._slots.Capacity;
             s.Geometry = new ShapeGeometry[c];
             for (int i = 0; i < n; i++) s.Geometry[i] = ShapeGeometry.ReadState(r, data);
-            s.LocalPose = r.ReadSlots<Pose>("shape poses", n, c);
-            s.Body = r.ReadSlots<int>("shape bodies", n, c);
-            s.NextInBody = r.ReadSlots<int>("shape lists", n, c);
-            s.Density = r.ReadSlots<float>("shape densities", n, c);
-            s.Friction = r.ReadSlots<float>("shape friction", n, c);
-            s.Restitution = r.ReadSlots<float>("shape restitution", n, c);
-            s.FrictionCombine = r.ReadSlots<CombineMode>("shape friction combine modes", n, c);
-            s.RestitutionCombine = r.ReadSlots<CombineMode>("shape restitution combine modes", n, c);
-            s.IsSensor = r.ReadSlots<bool>("shape sensor flags", n, c);
-            s.Layer = r.ReadSlots<int>("shape layers", n, c);
-            s.CollidesWith = r.ReadSlots<uint>("shape collision masks", n, c);
-            s.UserData = r.ReadSlots<ulong>("shape user data", n, c);
-            s.WorldAabb = r.ReadSlots<Aabb>("shape bounds", n, c);
-            s.ProxyId = r.ReadSlots<int>("shape proxies", n, c);
+            var columns = new ColumnReader(r, n, c);
+            s.Columns(ref columns);
             return s;
+        }
+
+        // Every per-slot array but the geometry (saved with its shared hulls and meshes) once,
+        // in state order: Grow resizes, Save writes and Load reads this list.
+        void Columns<TVisitor>(ref TVisitor v) where TVisitor : struct, IColumnVisitor
+        {
+            v.Column(ref LocalPose, "shape poses");
+            v.Column(ref Body, "shape bodies");
+            v.Column(ref NextInBody, "shape lists");
+            v.Column(ref Density, "shape densities");
+            v.Column(ref Friction, "shape friction");
+            v.Column(ref Restitution, "shape restitution");
+            v.Column(ref FrictionCombine, "shape friction combine modes");
+            v.Column(ref RestitutionCombine, "shape restitution combine modes");
+            v.Column(ref IsSensor, "shape sensor flags");
+            v.Column(ref Layer, "shape layers");
+            v.Column(ref CollidesWith, "shape collision masks");
+            v.Column(ref UserData, "shape user data");
+            v.Column(ref WorldAabb, "shape bounds");
+            v.Column(ref ProxyId, "shape proxies");
         }
     }
 }

@@ -54,20 +54,8 @@ namespace Fulcrum
         void Grow(int capacity)
         {
             Array.Resize(ref Geometry, capacity);
-            Array.Resize(ref LocalPose, capacity);
-            Array.Resize(ref Body, capacity);
-            Array.Resize(ref NextInBody, capacity);
-            Array.Resize(ref Density, capacity);
-            Array.Resize(ref Friction, capacity);
-            Array.Resize(ref Restitution, capacity);
-            Array.Resize(ref FrictionCombine, capacity);
-            Array.Resize(ref RestitutionCombine, capacity);
-            Array.Resize(ref IsSensor, capacity);
-            Array.Resize(ref Layer, capacity);
-            Array.Resize(ref CollidesWith, capacity);
-            Array.Resize(ref UserData, capacity);
-            Array.Resize(ref WorldAabb, capacity);
-            Array.Resize(ref ProxyId, capacity);
+            var columns = new ColumnResize(capacity);
+            Columns(ref columns);
         }
     }
 }

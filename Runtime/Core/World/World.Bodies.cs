@@ -211,8 +211,11 @@ namespace Fulcrum
             int i = Slot(body);
             Limits.CheckForce(force, nameof(force));
             ThrowIfInStep();
-            CheckLinear(i, force, mode, nameof(force));
-            ApplyLinear(i, force, mode);
+            if (Bodies.Type[i] != BodyType.Dynamic) return;
+            BodyPush push = LinearPush(i, force, mode);
+            push.Check(nameof(force));
+            push.Apply(i);
+            Wake(i);
         }
 
         /// <summary>
@@ -227,10 +230,13 @@ namespace Fulcrum
             ThrowIfInStep();
             Vector3 torque = Vector3.Cross(worldPoint - Bodies.Center[i], force);
             Limits.CheckForce(torque, nameof(worldPoint));
-            CheckLinear(i, force, mode, nameof(force));
-            CheckAngular(i, torque, mode, nameof(force));
-            ApplyLinear(i, force, mode);
-            ApplyAngular(i, torque, mode);
+            if (Bodies.Type[i] != BodyType.Dynamic) return;
+            BodyPush linear = LinearPush(i, force, mode), angular = AngularPush(i, torque, mode);
+            linear.Check(nameof(force));
+            angular.Check(nameof(force));
+            linear.Apply(i);
+            angular.Apply(i);
+            Wake(i);
         }
 
         /// <summary>Applies a torque (or angular acceleration, impulse, velocity change) in world axes. Dynamic bodies only. Wakes the body.</summary>
@@ -239,75 +245,40 @@ namespace Fulcrum
             int i = Slot(body);
             Limits.CheckForce(torque, nameof(torque));
             ThrowIfInStep();
-            CheckAngular(i, torque, mode, nameof(torque));
-            ApplyAngular(i, torque, mode);
-        }
-
-        // What ApplyLinear would store, checked first (all-or-nothing): the accumulated force
-        // stays within Limits.MaxForce and a velocity change within Limits.MaxInputSpeed.
-        // The message is built only on failure: AddForce runs every frame and must not allocate.
-        void CheckLinear(int i, Vector3 f, ForceMode mode, string name)
-        {
-            BodyStorage b = Bodies;
-            if (b.Type[i] != BodyType.Dynamic) return;
-            switch (mode)
-            {
-                case ForceMode.Force: CheckSum(b.Force[i] + f, Limits.MaxForce, name, "the force accumulated this step"); break;
-                case ForceMode.Acceleration: CheckSum(b.Force[i] + f * b.Mass[i], Limits.MaxForce, name, "mass x acceleration accumulated this step"); break;
-                case ForceMode.Impulse: CheckSum(b.LinearVelocity[i] + f * b.InverseMass[i], Limits.MaxInputSpeed, name, "the velocity after the impulse"); break;
-                case ForceMode.VelocityChange: CheckSum(b.LinearVelocity[i] + f, Limits.MaxInputSpeed, name, "the velocity after the change"); break;
-                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
-            }
-        }
-
-        void CheckAngular(int i, Vector3 t, ForceMode mode, string name)
-        {
-            BodyStorage b = Bodies;
-            if (b.Type[i] != BodyType.Dynamic) return;
-            switch (mode)
-            {
-                case ForceMode.Force: CheckSum(b.Torque[i] + t, Limits.MaxForce, name, "the torque accumulated this step"); break;
-                case ForceMode.Acceleration: CheckSum(b.Torque[i] + WorldInertia(i) * t, Limits.MaxForce, name, "inertia x angular acceleration accumulated this step"); break;
-                case ForceMode.Impulse: CheckSum(b.AngularVelocity[i] + b.InverseInertiaWorld[i] * t, Limits.MaxInputSpeed, name, "the angular velocity after the impulse"); break;
-                case ForceMode.VelocityChange: CheckSum(b.AngularVelocity[i] + t, Limits.MaxInputSpeed, name, "the angular velocity after the change"); break;
-                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
-            }
-        }
-
-        static void CheckSum(Vector3 result, float limit, string name, string what)
-        {
-            if (Validate.IsFinite(result) && Limits.Length(result) <= limit) return;
-            throw new ArgumentException($"{name}: {what} would be {result}, beyond {limit:G} (Limits.MaxForce/MaxInputSpeed).", name);
-        }
-
-        void ApplyLinear(int i, Vector3 f, ForceMode mode)
-        {
-            BodyStorage b = Bodies;
-            if (b.Type[i] != BodyType.Dynamic) return;
-            switch (mode)
-            {
-                case ForceMode.Force: b.Force[i] += f; break;
-                case ForceMode.Acceleration: b.Force[i] += f * b.Mass[i]; break;
-                case ForceMode.Impulse: b.LinearVelocity[i] += f * b.InverseMass[i]; break;
-                case ForceMode.VelocityChange: b.LinearVelocity[i] += f; break;
-                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
-            }
+            if (Bodies.Type[i] != BodyType.Dynamic) return;
+            BodyPush push = AngularPush(i, torque, mode);
+            push.Check(nameof(torque));
+            push.Apply(i);
             Wake(i);
         }
 
-        void ApplyAngular(int i, Vector3 t, ForceMode mode)
+        // What a push at the centre of mass of dynamic body i leaves: the force accumulated for
+        // the step (force, acceleration) or the velocity (impulse, velocity change).
+        BodyPush LinearPush(int i, Vector3 f, ForceMode mode)
         {
             BodyStorage b = Bodies;
-            if (b.Type[i] != BodyType.Dynamic) return;
-            switch (mode)
+            return mode switch
             {
-                case ForceMode.Force: b.Torque[i] += t; break;
-                case ForceMode.Acceleration: b.Torque[i] += WorldInertia(i) * t; break;
-                case ForceMode.Impulse: b.AngularVelocity[i] += b.InverseInertiaWorld[i] * t; break;
-                case ForceMode.VelocityChange: b.AngularVelocity[i] += t; break;
-                default: throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode));
-            }
-            Wake(i);
+                ForceMode.Force => new BodyPush(b.Force, b.Force[i] + f, Limits.MaxForce, "the force accumulated this step"),
+                ForceMode.Acceleration => new BodyPush(b.Force, b.Force[i] + f * b.Mass[i], Limits.MaxForce, "mass x acceleration accumulated this step"),
+                ForceMode.Impulse => new BodyPush(b.LinearVelocity, b.LinearVelocity[i] + f * b.InverseMass[i], Limits.MaxInputSpeed, "the velocity after the impulse"),
+                ForceMode.VelocityChange => new BodyPush(b.LinearVelocity, b.LinearVelocity[i] + f, Limits.MaxInputSpeed, "the velocity after the change"),
+                _ => throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode)),
+            };
+        }
+
+        // The same for a turning push: the torque accumulated for the step or the angular velocity.
+        BodyPush AngularPush(int i, Vector3 t, ForceMode mode)
+        {
+            BodyStorage b = Bodies;
+            return mode switch
+            {
+                ForceMode.Force => new BodyPush(b.Torque, b.Torque[i] + t, Limits.MaxForce, "the torque accumulated this step"),
+                ForceMode.Acceleration => new BodyPush(b.Torque, b.Torque[i] + WorldInertia(i) * t, Limits.MaxForce, "inertia x angular acceleration accumulated this step"),
+                ForceMode.Impulse => new BodyPush(b.AngularVelocity, b.AngularVelocity[i] + b.InverseInertiaWorld[i] * t, Limits.MaxInputSpeed, "the angular velocity after the impulse"),
+                ForceMode.VelocityChange => new BodyPush(b.AngularVelocity, b.AngularVelocity[i] + t, Limits.MaxInputSpeed, "the angular velocity after the change"),
+                _ => throw new ArgumentException($"Unknown ForceMode {mode}.", nameof(mode)),
+            };
         }
 
         // The world inertia tensor R I R^T (for mass-independent angular acceleration).

@@ -22,14 +22,8 @@ namespace Fulcrum.SoftBodies
         {
             _radius = Math.Max(radius, 1e-6f);
             _rest = mesh.VertexArray;
-            var onSurface = new bool[_rest.Length];
-            foreach (int v in mesh.SurfaceTriangles) onSurface[v] = true;
-            int n = 0;
-            foreach (bool b in onSurface) if (b) n++;
-            _ids = new int[n];
-            n = 0;
-            for (int i = 0; i < onSurface.Length; i++) if (onSurface[i]) _ids[n++] = i;
-            _hash = new SpatialHash(n);
+            _ids = mesh.SurfaceVertices();
+            _hash = new SpatialHash(_ids.Length);
         }
 
         /// <summary>Pairs found for this step.</summary>

@@ -23,14 +23,8 @@ namespace Fulcrum.SoftBodies
         {
             Body = body;
             Triangles = body.Mesh.SurfaceTriangles.ToArray();
-            var onSurface = new bool[body.VertexCount];
-            foreach (int v in Triangles) onSurface[v] = true;
-            int n = 0;
-            foreach (bool b in onSurface) if (b) n++;
-            Vertices = new int[n];
-            n = 0;
-            for (int i = 0; i < onSurface.Length; i++) if (onSurface[i]) Vertices[n++] = i;
-            Hash = new SpatialHash(n);
+            Vertices = body.Mesh.SurfaceVertices();
+            Hash = new SpatialHash(Vertices.Length);
         }
 
         /// <summary>Measures the surface where the step starts.</summary>

@@ -83,21 +83,7 @@ namespace Fulcrum.SoftBodies
                 if (inside(c)) for (int q = 0; q < 4; q++) kept.Add(gridTets[t + q]);
             }
             PeelSurfaceOnlyTets(gridVertices, kept);
-            var remap = new int[gridVertices.Length];
-            for (int i = 0; i < remap.Length; i++) remap[i] = -1;
-            var used = new List<Vector3>();
-            tets = new int[kept.Count];
-            for (int q = 0; q < kept.Count; q++)
-            {
-                int v = kept[q];
-                if (remap[v] < 0)
-                {
-                    remap[v] = used.Count;
-                    used.Add(gridVertices[v]);
-                }
-                tets[q] = remap[v];
-            }
-            vertices = used.ToArray();
+            MeshCompaction.DropUnused(gridVertices, kept, out vertices, out tets);
             SnapSurface(vertices, tets, project);
         }
 

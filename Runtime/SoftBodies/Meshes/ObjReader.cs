@@ -48,21 +48,7 @@ namespace Fulcrum.SoftBodies
                 }
             }
             if (faces.Count == 0) throw new ArgumentException("obj text has no faces.", "obj");
-            var remap = new int[positions.Count];
-            for (int i = 0; i < remap.Length; i++) remap[i] = -1;
-            var used = new List<Vector3>();
-            triangles = new int[faces.Count];
-            for (int k = 0; k < faces.Count; k++)
-            {
-                int v = faces[k];
-                if (remap[v] < 0)
-                {
-                    remap[v] = used.Count;
-                    used.Add(positions[v]);
-                }
-                triangles[k] = remap[v];
-            }
-            vertices = used.ToArray();
+            MeshCompaction.DropUnused(positions, faces, out vertices, out triangles);
         }
     }
 }

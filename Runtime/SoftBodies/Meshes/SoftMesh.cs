@@ -64,6 +64,19 @@ namespace Fulcrum.SoftBodies
         internal int[] TetArray => _tets;
         internal int[] TriangleArray => _triangles;
 
+        /// <summary>The vertices <see cref="SurfaceTriangles"/> use, ascending (a new array): those other bodies and self-collision touch.</summary>
+        internal int[] SurfaceVertices()
+        {
+            var onSurface = new bool[_vertices.Length];
+            foreach (int v in _surface) onSurface[v] = true;
+            int n = 0;
+            foreach (bool b in onSurface) if (b) n++;
+            var ids = new int[n];
+            n = 0;
+            for (int i = 0; i < onSurface.Length; i++) if (onSurface[i]) ids[n++] = i;
+            return ids;
+        }
+
         /// <summary>A volume mesh from vertices and tets (four indices each); both arrays are copied and validated.</summary>
         public static SoftMesh FromTetrahedra(Vector3[] vertices, int[] tetrahedra)
         {

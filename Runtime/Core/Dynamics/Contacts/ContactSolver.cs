@@ -259,16 +259,8 @@ namespace Fulcrum.Dynamics
                 wB += b.InverseInertia * l;
             }
 
-            if (a.IsDynamic != 0)
-            {
-                a.LinearVelocity = vA;
-                a.AngularVelocity = wA;
-            }
-            if (b.IsDynamic != 0)
-            {
-                b.LinearVelocity = vB;
-                b.AngularVelocity = wB;
-            }
+            a.StoreVelocities(vA, wA);
+            b.StoreVelocities(vB, wB);
         }
 
         static float CurrentSeparation(in ContactConstraintPoint p, in ContactPairMotion m) =>
@@ -406,16 +398,8 @@ namespace Fulcrum.Dynamics
                 vB += mB * P;
                 wB += impulse * p.Normal.VelocityB;
             }
-            if (a.IsDynamic != 0)
-            {
-                a.LinearVelocity = vA;
-                a.AngularVelocity = wA;
-            }
-            if (b.IsDynamic != 0)
-            {
-                b.LinearVelocity = vB;
-                b.AngularVelocity = wB;
-            }
+            a.StoreVelocities(vA, wA);
+            b.StoreVelocities(vB, wB);
         }
 
         /// <summary>

@@ -42,13 +42,7 @@ namespace Fulcrum.Dynamics
         public void Solve(ref SolverBody a, ref SolverBody b, Vector3 rA, Vector3 rB, Vector3 C, in Softness soft, bool useBias)
         {
             Vector3 jv = b.PointVelocity(rB) - a.PointVelocity(rA);
-            Vector3 impulse;
-            if (useBias)
-            {
-                Vector3 bias = soft.Bias(C, out float massScale, out float impulseScale);
-                impulse = -massScale * (EffectiveMass * (jv + bias)) - impulseScale * Impulse;
-            }
-            else impulse = -(EffectiveMass * jv);
+            Vector3 impulse = soft.BlockImpulse(EffectiveMass, jv, C, Impulse, useBias);
             Impulse += impulse;
             Apply(ref a, ref b, rA, rB, impulse);
         }

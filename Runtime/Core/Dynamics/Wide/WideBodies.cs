@@ -135,18 +135,8 @@ namespace Fulcrum.Dynamics
             int width = Vector<float>.Count;
             for (int lane = 0; lane < width; lane++)
             {
-                ref SolverBody a = ref bodies[laneBodies[2 * (groupOffset + lane)]];
-                ref SolverBody b = ref bodies[laneBodies[2 * (groupOffset + lane) + 1]];
-                if (a.IsDynamic != 0)
-                {
-                    a.LinearVelocity = l.VA.Get(lane);
-                    a.AngularVelocity = l.WA.Get(lane);
-                }
-                if (b.IsDynamic != 0)
-                {
-                    b.LinearVelocity = l.VB.Get(lane);
-                    b.AngularVelocity = l.WB.Get(lane);
-                }
+                bodies[laneBodies[2 * (groupOffset + lane)]].StoreVelocities(l.VA.Get(lane), l.WA.Get(lane));
+                bodies[laneBodies[2 * (groupOffset + lane) + 1]].StoreVelocities(l.VB.Get(lane), l.WB.Get(lane));
             }
         }
     }

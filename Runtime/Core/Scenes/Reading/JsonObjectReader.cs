@@ -123,6 +123,26 @@ namespace Fulcrum.Scenes
             return null;
         }
 
+        /// <summary>
+        /// A member that names one value of an enumeration, spelled as in <paramref name="names"/>
+        /// (one of <see cref="SceneNames"/>' tables): true with the value; false when absent
+        /// (reported when required), not a string, or an unknown name, which is reported with the
+        /// table's spellings.
+        /// </summary>
+        public bool Name<T>(string key, (T Value, string Name)[] names, string what, out T value, bool required = false) where T : struct, System.Enum
+        {
+            value = default;
+            string? name = String(key, required);
+            if (name == null) return false;
+            if (SceneNames.ValueOf(names, name, default, out value)) return true;
+            Unknown(key, what, name, SceneNames.Spellings(names));
+            return false;
+        }
+
+        /// <summary>Reports the member's string <paramref name="name"/> as no known <paramref name="what"/>, listing the <paramref name="expected"/> spellings.</summary>
+        public void Unknown(string key, string what, string name, string expected) =>
+            _d.Add(PathOf(key), $"unknown {what} '{name}' (expected {expected})", _obj[key]);
+
         public Vector3 Vector(string key, Vector3 fallback, bool required = false)
         {
             JsonValue? v = Take(key, required);

@@ -8,14 +8,8 @@ namespace Fulcrum.Scenes
         public static SceneJoint? Read(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a joint object");
-            if (r == null) return null;
-            string? type = r.String("type", required: true);
-            if (type == null) return null;
-            if (!SceneNames.TryParse(type, out JointKind kind))
-            {
-                d.Add(JsonPath.Member(v.Path, "type"), $"unknown joint type '{type}' (expected ball, hinge, distance, fixed, prismatic or coneTwist)", v["type"]);
+            if (r == null || !r.Name("type", SceneNames.JointKinds, "joint type", out JointKind kind, required: true))
                 return null;
-            }
             SceneJoint joint;
             switch (kind)
             {

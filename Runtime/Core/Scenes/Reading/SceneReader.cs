@@ -37,11 +37,7 @@ namespace Fulcrum.Scenes
             var s = new SceneSolver();
             JsonObjectReader? r = JsonObjectReader.Open(v, d);
             if (r == null) return s;
-            if (r.String("type") is string type)
-            {
-                if (SceneNames.TryParse(type, out SolverType t)) s.Type = t;
-                else d.Add(JsonPath.Member(v.Path, "type"), $"unknown solver '{type}' (expected pgs or tgs)", v["type"]);
-            }
+            if (r.Name("type", SceneNames.SolverTypes, "solver", out SolverType t)) s.Type = t;
             s.Iterations = r.Int("iterations", s.Iterations);
             s.Substeps = r.Int("substeps", s.Substeps);
             s.ContactHertz = r.OptionalFloat("contactHertz");
@@ -80,11 +76,7 @@ namespace Fulcrum.Scenes
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a body object");
             if (r == null) return null;
             var b = new SceneBody { Name = r.String("name", required: true) ?? "" };
-            if (r.String("type") is string type)
-            {
-                if (SceneNames.TryParse(type, out BodyType t)) b.Type = t;
-                else d.Add(JsonPath.Member(v.Path, "type"), $"unknown body type '{type}' (expected static, kinematic or dynamic)", v["type"]);
-            }
+            if (r.Name("type", SceneNames.BodyTypes, "body type", out BodyType t)) b.Type = t;
             if (r.Take("shape", required: true) is JsonValue shape) b.Shape = ReadShape(shape, d);
             b.Mass = r.OptionalFloat("mass");
             b.Density = r.OptionalFloat("density");
@@ -106,9 +98,9 @@ namespace Fulcrum.Scenes
             foreach (JsonValue item in items)
             {
                 if (item.Kind != JsonKind.String)
-                    d.Add(item.Path, $"expected an axis name (linearX, linearY, linearZ, angularX, angularY or angularZ), got {item.KindName}", item);
+                    d.Add(item.Path, $"expected an axis name ({SceneNames.Spellings(SceneNames.LockAxes)}), got {item.KindName}", item);
                 else if (!SceneNames.TryParse(item.AsString, out AxisLocks axis))
-                    d.Add(item.Path, $"unknown axis '{item.AsString}' (expected linearX, linearY, linearZ, angularX, angularY or angularZ)", item);
+                    d.Add(item.Path, $"unknown axis '{item.AsString}' (expected {SceneNames.Spellings(SceneNames.LockAxes)})", item);
                 else if ((locks & axis) != 0)
                     d.Add(item.Path, $"axis '{item.AsString}' is listed twice", item);
                 else locks |= axis;
@@ -120,14 +112,8 @@ namespace Fulcrum.Scenes
         public static SceneShape? ReadShape(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a shape object");
-            if (r == null) return null;
-            string? type = r.String("type", required: true);
-            if (type == null) return null;
-            if (!SceneNames.TryParse(type, out SceneShapeType kind))
-            {
-                d.Add(JsonPath.Member(v.Path, "type"), $"unknown shape type '{type}' (expected sphere, box, capsule, convex, plane, mesh or compound)", v["type"]);
+            if (r == null || !r.Name("type", SceneNames.ShapeTypes, "shape type", out SceneShapeType kind, required: true))
                 return null;
-            }
             SceneShape shape;
             switch (kind)
             {

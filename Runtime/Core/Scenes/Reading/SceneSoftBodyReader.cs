@@ -27,7 +27,7 @@ namespace Fulcrum.Scenes
             if (r.String("solver") is string solver)
             {
                 if (solver == "xpbd" || solver == "newton") s.Solver = solver;
-                else d.Add(JsonPath.Member(v.Path, "solver"), $"unknown solver '{solver}' (expected xpbd or newton)", v["solver"]);
+                else r.Unknown("solver", "solver", solver, "xpbd or newton");
             }
             s.LinearDamping = r.OptionalFloat("linearDamping");
             s.GravityScale = r.OptionalFloat("gravityScale");
@@ -58,14 +58,8 @@ namespace Fulcrum.Scenes
         static SceneSoftMesh? ReadMesh(JsonValue v, SceneDiagnostics d)
         {
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a mesh object");
-            if (r == null) return null;
-            string? type = r.String("type", required: true);
-            if (type == null) return null;
-            if (!SceneNames.TryParse(type, out SceneSoftMeshType kind))
-            {
-                d.Add(JsonPath.Member(v.Path, "type"), $"unknown soft mesh type '{type}' (expected box, sphere, capsule, beam, cloth, tetgen or obj)", v["type"]);
+            if (r == null || !r.Name("type", SceneNames.SoftMeshTypes, "soft mesh type", out SceneSoftMeshType kind, required: true))
                 return null;
-            }
             SceneSoftMesh mesh;
             switch (kind)
             {
@@ -75,7 +69,7 @@ namespace Fulcrum.Scenes
                     if (r.String("split") is string split)
                     {
                         if (split == "six" || split == "six-mirrored" || split == "five") box.Split = split;
-                        else d.Add(JsonPath.Member(v.Path, "split"), $"unknown split '{split}' (expected six, six-mirrored or five)", v["split"]);
+                        else r.Unknown("split", "split", split, "six, six-mirrored or five");
                     }
                     mesh = box;
                     break;
@@ -140,11 +134,7 @@ namespace Fulcrum.Scenes
             JsonObjectReader? r = JsonObjectReader.Open(v, d, "a material object");
             if (r == null) return null;
             var m = new SceneSoftMaterial();
-            if (r.String("model") is string model)
-            {
-                if (SceneNames.TryParse(model, out SceneSoftModel k)) m.Model = k;
-                else d.Add(JsonPath.Member(v.Path, "model"), $"unknown model '{model}' (expected stable-neo-hookean or neo-hookean)", v["model"]);
-            }
+            if (r.Name("model", SceneNames.SoftModels, "model", out SceneSoftModel model)) m.Model = model;
             m.YoungsModulus = r.OptionalFloat("youngsModulus");
             m.PoissonRatio = r.OptionalFloat("poissonRatio");
             m.Mu = r.OptionalFloat("mu");
