@@ -164,11 +164,12 @@ namespace Fulcrum.Tests.Solver
         // 1 kg link rings at about 300 rad/s: more than a 4-substep step resolves when the spring
         // is taken only explicitly (the rows turning between substeps), and the chain burst: the
         // load fell 185 m in 15 s (stable from 8 substeps). With the spring implicit in the block
-        // (two compliant rows across each rod, and two holding the link's turning against a rod's
-        // line) it swings as a pendulum. Measured: the rods within 0.1 / 0.4 mm of their length, the
-        // load never above its release, and its swing after 10 s 94.5 % (0.3 rad) and 91.5 % (0.6
-        // rad) of the release's: the implicit rows damp it (with ball joints in the rods' place it
-        // keeps 100 % and 96 %). Five such links: the next test.
+        // (two compliant rows across each rod, and two for each end's turning under the pull) it
+        // swings as a pendulum. Measured: the rods within 0.1 / 0.4 mm of their length, the load
+        // never above its release, and its swing after 10 s 80.7 % (0.3 rad) and 78.6 % (0.6 rad) of
+        // the release's: the implicit rows damp it (92.6 / 89.0 % with the rows across alone, which
+        // held this one link but not five; with ball joints in the rods' place it keeps 100 % and
+        // 96 %). Five such links: the next test.
         [TestCase(0.3f)]
         [TestCase(0.6f)]
         public void A_heavy_load_swung_on_a_light_link_between_rods_keeps_its_length_and_swing(float angle)
@@ -196,23 +197,25 @@ namespace Fulcrum.Tests.Solver
             TestContext.Out.WriteLine($"{angle} rad: rods within {worstRod * 1000:F3} mm, highest after release {(highest - release) * 1000:F2} mm, swing after 10 s {lastSwing / startSwing * 100:F1} % of the release's");
             Assert.That(worstRod, Is.LessThan(0.001f), "the rods hold their length");
             Assert.That(highest, Is.LessThan(release + 0.001f), "no energy gained");
-            Assert.That(lastSwing / startSwing, Is.GreaterThan(0.85f), "the swing is kept, but for the damping of the implicit rows");
+            Assert.That(lastSwing / startSwing, Is.GreaterThan(0.75f), "the swing is kept, but for the damping of the implicit rows");
         }
 
-        // Five 1 kg, 0.5 m bars joined by 0.1 m rods under a 1000 kg load, swung as one pendulum.
-        // Under 10 kN each bar hangs from its rods' anchors like a pendulum in that pull: turned
-        // against a rod's line it is held by about T * 0.25 m = 2450 N m/rad, which on its 0.022
-        // kg m^2 rings at about 480 rad/s, twice the 4-substep rate. Taken only explicitly that
-        // outran the step: swung beyond 0.05 rad the chain burst (0.3 rad: the load 40 m off within
-        // 10 s, bars spinning at 150 rad/s; 8 substeps held). With two compliant tilt rows per rod
-        // (the bar's turning against the rod's line, implicit) it swings as a pendulum. Measured:
-        // the load's distance to the hook within 0.07-0.30 mm, never above its release, 98.2-98.3 %
-        // of the swing left after 10 s, bars turning at most 0.13-1.36 rad/s. At 3000 kg and more it
-        // still bursts at 4 substeps (see MassRatio.md).
-        [TestCase(0.05f)]
-        [TestCase(0.3f)]
-        [TestCase(0.6f)]
-        public void Five_light_bars_between_rods_under_a_heavy_load_swing_without_bursting(float angle)
+        // Five 1 kg, 0.5 m bars joined by 0.1 m rods under a heavy load, swung as one pendulum.
+        // Under 10 kN (1000 kg) each bar hangs from each rod's anchor like a pendulum in that pull:
+        // turned, it is held by about T * 0.25 m = 2450 N m/rad per end, which on its 0.022 kg m^2
+        // rings at about 480 rad/s, twice the 4-substep rate. Taken only explicitly that outran the
+        // step: swung beyond 0.05 rad the chain burst (0.3 rad: the load 40 m off within 10 s, bars
+        // spinning at 150 rad/s; 8 substeps held). With two compliant tilt rows per rod end (that
+        // stiffness implicit) it swings as a pendulum at any load. Measured, 1000 kg at 0.05 / 0.3 /
+        // 0.6 rad and 1e4 / 1e6 kg at 0.3 rad: the load's distance to the hook within 0.07-0.30 mm,
+        // never above its release, 90.4-90.5 % of the swing left after 10 s (the implicit rows
+        // damp it), bars turning at most 0.09-1.02 rad/s.
+        [TestCase(0.05f, 1000f)]
+        [TestCase(0.3f, 1000f)]
+        [TestCase(0.6f, 1000f)]
+        [TestCase(0.3f, 1e4f)]
+        [TestCase(0.3f, 1e6f)]
+        public void Five_light_bars_between_rods_under_a_heavy_load_swing_without_bursting(float angle, float loadMass)
         {
             var w = Awake();
             Quaternion tilt = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
@@ -231,7 +234,7 @@ namespace Fulcrum.Tests.Solver
                 y -= 2 * Half;
             }
             y -= rod;
-            BodyHandle load = Box(w, Vector3.Transform(new Vector3(0, y - 0.25f, 0), tilt), new Vector3(0.25f), 1000f, tilt);
+            BodyHandle load = Box(w, Vector3.Transform(new Vector3(0, y - 0.25f, 0), tilt), new Vector3(0.25f), loadMass, tilt);
             w.CreateJoint(JointDef.Distance(prev, load, prevAnchor, new Vector3(0, 0.25f, 0), rod, rod));
             float reach = w.GetBody(load).Position.Length(), release = w.GetBody(load).Position.Y, startSwing = w.GetBody(load).Position.X;
             float worstReach = 0, highest = float.MinValue, lastSwing = 0, spin = 0;
@@ -244,11 +247,11 @@ namespace Fulcrum.Tests.Solver
                 if (n > 30) highest = MathF.Max(highest, r.Position.Y);
                 if (n > 480) lastSwing = MathF.Max(lastSwing, MathF.Abs(r.Position.X));
             }
-            TestContext.Out.WriteLine($"{angle} rad: load's distance to the hook within {worstReach * 1000:F2} mm, highest after release {(highest - release) * 1000:F2} mm, swing after 10 s {lastSwing / startSwing * 100:F1} %, bars turning at most {spin:F2} rad/s");
+            TestContext.Out.WriteLine($"{loadMass:G} kg, {angle} rad: load's distance to the hook within {worstReach * 1000:F2} mm, highest after release {(highest - release) * 1000:F2} mm, swing after 10 s {lastSwing / startSwing * 100:F1} %, bars turning at most {spin:F2} rad/s");
             Assert.That(worstReach, Is.LessThan(0.002f), "the chain keeps its length");
             Assert.That(highest, Is.LessThan(release + 0.001f), "no energy gained");
             Assert.That(spin, Is.LessThan(5f), "the bars swing with the chain");
-            Assert.That(lastSwing / startSwing, Is.InRange(0.9f, 1f), "the swing is kept, and never grows (explicit, 0.05 rad grew to 103 % in 10 s)");
+            Assert.That(lastSwing / startSwing, Is.InRange(0.85f, 1f), "the swing is kept but for the implicit rows' damping, and never grows (explicit, 0.05 rad grew to 103 % in 10 s)");
         }
 
         static float RodChain(float loadMass, bool trees, out float speed, bool rope)

@@ -32,8 +32,8 @@ namespace Fulcrum.Dynamics
     /// rotation rows of welds (three, J = [0, ±I]) and hinges (two, J = [0, ±u]) near their
     /// target; a rigid distance joint (min = max) joins as its one length row, J = ±[n, r x n],
     /// a rope (min &lt; max) pulled taut as its upper limit row (an equality that may only pull),
-    /// both with two compliant rows across them and two for one end's turning against them,
-    /// their geometric stiffness (see Factor and Tilt),
+    /// both with compliant rows for their geometric stiffness, two across them and two for each
+    /// end's turning under the pull (see Factor and Tilt),
     /// and a prismatic joint as its two rows across the slide axis and its rotation lock. A joint
     /// further apart than its capped bias closes at full rate keeps its rows
     /// (it is being pulled in). A hinge on or closing on an angle limit brings that row too (see
@@ -55,6 +55,14 @@ namespace Fulcrum.Dynamics
     /// </summary>
     internal sealed class JointTreeSolver
     {
+        // Rows a joint node may hold (a rod's seven: length, two across, two tilt rows per end), the
+        // stride of every node's block and vector slots; body nodes use six of them.
+        const int Stride = 7;
+        const int Block = Stride * Stride;
+
+        // Offset of entry (row, column) in a node's block.
+        static int At(int row, int column) => Stride * row + column;
+
         // Nodes. A body node holds its solver body index, a joint node its joint slot.
         int[] _body = new int[16];
         int[] _dim = new int[16];
@@ -67,23 +75,23 @@ namespace Fulcrum.Dynamics
         Vector3[] _armA = new Vector3[16], _armB = new Vector3[16], _gap = new Vector3[16];
         // Per joint node: its row set, named by kind (Ball: the anchor's 3 alone; Fixed: and 3
         // about the world axes; Hinge: and 2 about u1, u2; Distance: the length row, a taut
-        // rope's upper limit, 2 compliant rows across it and 2 tilt rows; Prismatic: 2 across the slide
+        // rope's upper limit, 2 compliant rows across it and 2 tilt rows per end; Prismatic: 2 across the slide
         // axis and the 3 of the lock), their axes, the error of the
         // rows after the anchor's (rotation vector, hinge errors, length error), and each row's
         // soft scales (6 per node).
         JointKind[] _rows = new JointKind[16];
         Vector3[] _axes = new Vector3[48];
         Vector3[] _error = new Vector3[16];
-        Vector2[] _scale = new Vector2[96];
+        Vector2[] _scale = new Vector2[16 * Stride];
         bool[] _leaf = new bool[16];
         // Per joint node: its one-sided row (a stop, a rope) released for this factorisation.
         bool[] _free = new bool[16];
-        // Per distance node: the side whose turning its two tilt rows hold (+1 B, -1 A, 0 none; see Factor).
-        sbyte[] _tilt = new sbyte[16];
-        // Factor: D^-1 (6x6 per node), H_ip (the block to the parent, rows of i, 6x6 room) and L = D^-1 H_ip.
-        double[] _dinv = new double[16 * 36], _h = new double[16 * 36], _l = new double[16 * 36];
-        double[] _x = new double[16 * 6];
-        readonly double[] _scratch = new double[36];
+        // Per distance node: which ends' turning its tilt rows hold (bit 0: A, rows 3-4; bit 1: B, rows 5-6; see Tilt).
+        byte[] _tilt = new byte[16];
+        // Factor: D^-1 (Stride x Stride per node), H_ip (the block to the parent, rows of i, Stride x Stride room) and L = D^-1 H_ip.
+        double[] _dinv = new double[16 * Block], _h = new double[16 * Block], _l = new double[16 * Block];
+        double[] _x = new double[16 * Stride];
+        readonly double[] _scratch = new double[Stride];
         // Build: union-find over solver bodies, per-body node and adjacency.
         int[] _find = new int[16], _bodyNode = new int[16], _first = new int[16], _next = new int[32], _stack = new int[16];
         bool[] _anchored = new bool[16];
@@ -262,20 +270,20 @@ namespace Fulcrum.Dynamics
                 _armA = new Vector3[capacity];
                 _armB = new Vector3[capacity];
                 _gap = new Vector3[capacity];
-                _scale = new Vector2[6 * capacity];
+                _scale = new Vector2[Stride * capacity];
                 _rows = new JointKind[capacity];
                 _axes = new Vector3[3 * capacity];
                 _error = new Vector3[capacity];
                 _leaf = new bool[capacity];
                 _free = new bool[capacity];
-                _tilt = new sbyte[capacity];
+                _tilt = new byte[capacity];
             }
-            if (_dinv.Length < 36 * capacity)
+            if (_dinv.Length < Block * capacity)
             {
-                _dinv = new double[36 * capacity];
-                _h = new double[36 * capacity];
-                _l = new double[36 * capacity];
-                _x = new double[6 * capacity];
+                _dinv = new double[Block * capacity];
+                _h = new double[Block * capacity];
+                _l = new double[Block * capacity];
+                _x = new double[Stride * capacity];
             }
             int n = 0;
             for (int k = 0; k < _directCount; k++)
@@ -285,7 +293,7 @@ namespace Fulcrum.Dynamics
                 _body[jn] = -1;
                 _joint[jn] = _direct[k];
                 _rows[jn] = j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic || j.DirectRotation ? j.Kind : JointKind.Ball;
-                _dim[jn] = j.Kind == JointKind.Distance ? 5 : j.Kind == JointKind.Prismatic ? 5
+                _dim[jn] = j.Kind == JointKind.Distance ? 7 : j.Kind == JointKind.Prismatic ? 5
                     : j.DirectRotation ? (j.Kind == JointKind.Fixed || j.DirectLimit != 0 ? 6 : 5) : 3;
                 _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
@@ -416,12 +424,12 @@ namespace Fulcrum.Dynamics
             {
                 if (_joint[i] < 0 || _free[i]) continue;
                 ref JointData j = ref data[_joint[i]];
-                int at = 6 * i;
+                int at = Stride * i;
                 ref SolverBody a = ref bodies[j.SolverA];
                 ref SolverBody b = ref bodies[j.SolverB];
                 if (_rows[i] == JointKind.Hinge && _dim[i] == 6)
                 {
-                    Vector2 s = _scale[6 * i + 5];
+                    Vector2 s = _scale[Stride * i + 5];
                     ref AxisConstraintPart stop = ref j.DirectLimit > 0 ? ref j.Parts.Hinge.LowerLimit : ref j.Parts.Hinge.UpperLimit;
                     if (stop.Impulse + s.X * (float)x[at + 5] - s.Y * stop.Impulse >= 0f) continue;
                     // What it holds (the warm start's push) is taken back before the block is solved again.
@@ -432,7 +440,7 @@ namespace Fulcrum.Dynamics
                 }
                 else if (_rows[i] == JointKind.Distance && j.MinLength != j.MaxLength)
                 {
-                    Vector2 s = _scale[6 * i];
+                    Vector2 s = _scale[Stride * i];
                     ref AxisConstraintPart rope = ref j.Parts.Distance.UpperLimit;
                     if (rope.Impulse + s.X * (float)x[at] - s.Y * rope.Impulse >= 0f) continue;
                     Vector3 p = rope.Impulse * _axes[3 * i];
@@ -453,7 +461,7 @@ namespace Fulcrum.Dynamics
             double[] x = _x;
             for (int i = 0; i < _nodes; i++)
             {
-                int at = 6 * i;
+                int at = Stride * i;
                 if (_joint[i] < 0)
                 {
                     for (int k = 0; k < 6; k++) x[at + k] = 0;
@@ -475,14 +483,14 @@ namespace Fulcrum.Dynamics
                         massScale = 1;
                         impulseScale = 0;
                         if (useBias) v += soft.Bias(r == 0 ? _gap[i].X : _gap[i].Y, out massScale, out impulseScale);
-                        _scale[6 * i + r] = new Vector2(massScale, impulseScale);
+                        _scale[Stride * i + r] = new Vector2(massScale, impulseScale);
                         x[at + r] = v;
                     }
                     Vector3 wl = b.AngularVelocity - a.AngularVelocity;
                     massScale = 1;
                     impulseScale = 0;
                     if (useBias) wl += soft.Bias(_error[i], out massScale, out impulseScale);
-                    for (int r = 2; r < 5; r++) _scale[6 * i + r] = new Vector2(massScale, impulseScale);
+                    for (int r = 2; r < 5; r++) _scale[Stride * i + r] = new Vector2(massScale, impulseScale);
                     x[at + 2] = wl.X;
                     x[at + 3] = wl.Y;
                     x[at + 4] = wl.Z;
@@ -493,23 +501,23 @@ namespace Fulcrum.Dynamics
                     // The length row: J v = n . (the anchors' relative velocity), error |d| - L.
                     float v = Vector3.Dot(_axes[3 * i], jv);
                     if (useBias) v += soft.Bias(_error[i].X, out massScale, out impulseScale);
-                    _scale[6 * i] = new Vector2(massScale, impulseScale);
+                    _scale[Stride * i] = new Vector2(massScale, impulseScale);
                     x[at] = v;
                     x[at + 1] = Vector3.Dot(_axes[3 * i + 1], jv);
                     x[at + 2] = Vector3.Dot(_axes[3 * i + 2], jv);
-                    x[at + 3] = x[at + 4] = 0;
-                    if (_tilt[i] != 0)
+                    x[at + 3] = x[at + 4] = x[at + 5] = x[at + 6] = 0;
+                    // The tilt rows of each held end: J v = e_k . w of that end's body.
+                    for (int side = 0; side < 2; side++)
                     {
-                        // J v = e_k . w (the tilting body) + a_k . (the anchors' relative velocity).
-                        TiltLine(i, out Vector3 a1, out Vector3 a2);
-                        Vector3 spin = _tilt[i] > 0 ? b.AngularVelocity : a.AngularVelocity;
-                        x[at + 3] = Vector3.Dot(_axes[3 * i + 1], spin) + Vector3.Dot(a1, jv);
-                        x[at + 4] = Vector3.Dot(_axes[3 * i + 2], spin) + Vector3.Dot(a2, jv);
+                        if ((_tilt[i] & (1 << side)) == 0) continue;
+                        Vector3 spin = side == 1 ? b.AngularVelocity : a.AngularVelocity;
+                        x[at + 3 + 2 * side] = Vector3.Dot(_axes[3 * i + 1], spin);
+                        x[at + 4 + 2 * side] = Vector3.Dot(_axes[3 * i + 2], spin);
                     }
                     continue;
                 }
                 if (useBias) jv += soft.Bias(_gap[i], out massScale, out impulseScale);
-                for (int r = 0; r < 3; r++) _scale[6 * i + r] = new Vector2(massScale, impulseScale);
+                for (int r = 0; r < 3; r++) _scale[Stride * i + r] = new Vector2(massScale, impulseScale);
                 x[at] = jv.X;
                 x[at + 1] = jv.Y;
                 x[at + 2] = jv.Z;
@@ -536,29 +544,29 @@ namespace Fulcrum.Dynamics
                 for (int r = 0; r < rows; r++)
                 {
                     x[at + 3 + r] = Vector3.Dot(_axes[3 * i + r], w) + (r == 0 ? bias.X : r == 1 ? bias.Y : bias.Z);
-                    _scale[6 * i + 3 + r] = new Vector2(massScale, impulseScale);
+                    _scale[Stride * i + 3 + r] = new Vector2(massScale, impulseScale);
                 }
             }
             // Forward: z_i = D_i^-1 y_i, y_p -= H_ip^T z_i (children first).
             double[] t = _scratch;
             for (int n = 0; n < _nodes; n++)
             {
-                int i = _order[n], d = Dim(i), at = 6 * i, m = 36 * i;
+                int i = _order[n], d = Dim(i), at = Stride * i, m = Block * i;
                 if (_leaf[i]) continue; // a childless body: y = 0, so z = 0 and nothing reaches its parent
                 for (int r = 0; r < d; r++)
                 {
                     double sum = 0;
-                    for (int c = 0; c < d; c++) sum += _dinv[m + 6 * r + c] * x[at + c];
+                    for (int c = 0; c < d; c++) sum += _dinv[m + Stride * r + c] * x[at + c];
                     t[r] = sum;
                 }
                 for (int r = 0; r < d; r++) x[at + r] = t[r];
                 int p = _parent[i];
                 if (p < 0) continue;
-                int dp = Dim(p), ap = 6 * p;
+                int dp = Dim(p), ap = Stride * p;
                 for (int c = 0; c < dp; c++)
                 {
                     double sum = 0;
-                    for (int k = 0; k < d; k++) sum += _h[m + 6 * k + c] * t[k];
+                    for (int k = 0; k < d; k++) sum += _h[m + Stride * k + c] * t[k];
                     x[ap + c] -= sum;
                 }
             }
@@ -567,11 +575,11 @@ namespace Fulcrum.Dynamics
             {
                 int i = _order[n], p = _parent[i];
                 if (p < 0) continue;
-                int d = Dim(i), dp = Dim(p), at = 6 * i, ap = 6 * p, m = 36 * i;
+                int d = Dim(i), dp = Dim(p), at = Stride * i, ap = Stride * p, m = Block * i;
                 for (int r = 0; r < d; r++)
                 {
                     double sum = 0;
-                    for (int c = 0; c < dp; c++) sum += _l[m + 6 * r + c] * x[ap + c];
+                    for (int c = 0; c < dp; c++) sum += _l[m + Stride * r + c] * x[ap + c];
                     x[at + r] -= sum;
                 }
             }
@@ -587,19 +595,19 @@ namespace Fulcrum.Dynamics
             for (int i = 0; i < _nodes; i++)
             {
                 if (_joint[i] < 0) continue;
-                int at = 6 * i;
+                int at = Stride * i;
                 ref JointData j = ref data[_joint[i]];
-                Vector2 s = _scale[6 * i];
+                Vector2 s = _scale[Stride * i];
                 if (_rows[i] == JointKind.Prismatic)
                 {
                     ref PrismaticJointParts slide = ref j.Parts.Prismatic;
                     float d1 = s.X * (float)x[at] - s.Y * slide.Perp1.Impulse;
-                    Vector2 s2 = _scale[6 * i + 1];
+                    Vector2 s2 = _scale[Stride * i + 1];
                     float d2 = s2.X * (float)x[at + 1] - s2.Y * slide.Perp2.Impulse;
                     slide.Perp1.Impulse += d1;
                     slide.Perp2.Impulse += d2;
                     Vector3 across = d1 * _axes[3 * i] + d2 * _axes[3 * i + 1];
-                    Vector2 s3 = _scale[6 * i + 2];
+                    Vector2 s3 = _scale[Stride * i + 2];
                     Vector3 turn = s3.X * new Vector3((float)x[at + 2], (float)x[at + 3], (float)x[at + 4]) - s3.Y * slide.Lock.Impulse;
                     slide.Lock.Impulse += turn;
                     if (bodies[j.SolverA].IsDynamic != 0)
@@ -622,30 +630,24 @@ namespace Fulcrum.Dynamics
                     if (rope && length.Impulse + dl < 0f) dl = -length.Impulse; // a rope only pulls
                     length.Impulse += dl;
                     // The geometric stiffness rows' impulses as they are (compliant, unbiased, not kept),
-                    // but where the tilt rows hold an end: then all four scaled as the length row's
+                    // but where tilt rows hold an end: then all of them scaled as the length row's
                     // rigid impulse is (massScale). They were solved against that rigid impulse, and
                     // the soft step delivers only its scaled part: applied whole they pushed a light bar
                     // against a pull it no longer had, and five 1 kg bars under 1000 kg burst faster
                     // than without them (consistent, they hold).
                     float across = _tilt[i] != 0 ? s.X : 1f;
                     Vector3 p = dl * _axes[3 * i] + across * ((float)x[at + 1] * _axes[3 * i + 1] + (float)x[at + 2] * _axes[3 * i + 2]);
-                    Vector3 turn = Vector3.Zero;
-                    if (_tilt[i] != 0)
-                    {
-                        TiltLine(i, out Vector3 a1, out Vector3 a2);
-                        float m1 = across * (float)x[at + 3], m2 = across * (float)x[at + 4];
-                        p += m1 * a1 + m2 * a2;
-                        turn = m1 * _axes[3 * i + 1] + m2 * _axes[3 * i + 2];
-                    }
+                    Vector3 turnA = across * ((float)x[at + 3] * _axes[3 * i + 1] + (float)x[at + 4] * _axes[3 * i + 2]);
+                    Vector3 turnB = across * ((float)x[at + 5] * _axes[3 * i + 1] + (float)x[at + 6] * _axes[3 * i + 2]);
                     if (bodies[j.SolverA].IsDynamic != 0)
                     {
                         bodies[j.SolverA].ApplyImpulse(_armA[i], -p);
-                        if (_tilt[i] < 0) bodies[j.SolverA].ApplyAngularImpulse(turn);
+                        if ((_tilt[i] & 1) != 0) bodies[j.SolverA].ApplyAngularImpulse(turnA);
                     }
                     if (bodies[j.SolverB].IsDynamic != 0)
                     {
                         bodies[j.SolverB].ApplyImpulse(_armB[i], p);
-                        if (_tilt[i] > 0) bodies[j.SolverB].ApplyAngularImpulse(turn);
+                        if ((_tilt[i] & 2) != 0) bodies[j.SolverB].ApplyAngularImpulse(turnB);
                     }
                     continue;
                 }
@@ -658,7 +660,7 @@ namespace Fulcrum.Dynamics
                 if (b.IsDynamic != 0) b.ApplyImpulse(_armB[i], impulse);
                 if (_dim[i] == 3) continue;
                 Vector3 l;
-                s = _scale[6 * i + 3];
+                s = _scale[Stride * i + 3];
                 if (_rows[i] == JointKind.Fixed)
                 {
                     ref RotationLockPart lockPart = ref j.Parts.Fixed.Lock;
@@ -704,14 +706,14 @@ namespace Fulcrum.Dynamics
         }
 
         // Block LDL^T in elimination order: D_i = H_ii - sum over children c of H_ci^T D_c^-1 H_ci,
-        // L_i = D_i^-1 H_ip. Blocks are 6x6 slots (stride 6) holding d x d or d x dp entries.
+        // L_i = D_i^-1 H_ip. Blocks are Stride x Stride slots holding d x d or d x dp entries.
         bool Factor(SolverBody[] bodies, JointData[] data, float step)
         {
             double[] dm = _dinv;
             for (int i = 0; i < _nodes; i++)
             {
-                int m = 36 * i;
-                for (int k = 0; k < 36; k++) dm[m + k] = 0;
+                int m = Block * i;
+                for (int k = 0; k < Block; k++) dm[m + k] = 0;
                 if (_joint[i] >= 0)
                 {
                     ref JointData j = ref data[_joint[i]];
@@ -756,15 +758,21 @@ namespace Fulcrum.Dynamics
                         float lighter = MathF.Max(bodies[j.SolverA].InverseMass, bodies[j.SolverB].InverseMass);
                         double stiffness = tension / Math.Max(length, 1e-6);
                         double compliance = stiffness * step * step * lighter > 0.1 ? 1.0 / (stiffness * step * step) : 1e12;
-                        dm[m + 7] = -compliance;
-                        dm[m + 14] = -compliance;
-                        // Two tilt rows: the turning of one end's body against the rod's line, whose
+                        dm[m + At(1, 1)] = -compliance;
+                        dm[m + At(2, 2)] = -compliance;
+                        // Two tilt rows per end: the turning of its body against the rod's line, whose
                         // stiffness under the pull is explicit otherwise (see Tilt).
                         float pull = (rope ? j.Parts.Distance.UpperLimit.Impulse : -j.Parts.Distance.Length.Impulse) / step;
-                        double tilt = Tilt(bodies, j, _armA[i], _armB[i], n, _axes[3 * i + 1], _axes[3 * i + 2], length, pull, step, out _tilt[i]);
-                        dm[m + 21] = -tilt;
-                        dm[m + 28] = -tilt;
-                        if (_free[i]) dm[m] = dm[m + 7] = dm[m + 14] = dm[m + 21] = dm[m + 28] = -Released; // slack: no tension, no stiffness
+                        _tilt[i] = 0;
+                        for (int side = 0; side < 2; side++)
+                        {
+                            double tilt = Tilt(bodies, j, side == 1, side == 1 ? _armB[i] : _armA[i], n, _axes[3 * i + 1], _axes[3 * i + 2], length, pull, step);
+                            if (tilt < 1e12) _tilt[i] |= (byte)(1 << side);
+                            dm[m + At(3 + 2 * side, 3 + 2 * side)] = -tilt;
+                            dm[m + At(4 + 2 * side, 4 + 2 * side)] = -tilt;
+                        }
+                        if (_free[i]) // slack: no tension, no stiffness
+                            for (int row = 0; row < 7; row++) dm[m + At(row, row)] = -Released;
                     }
                     else if (_rows[i] == JointKind.Fixed)
                     {
@@ -787,36 +795,36 @@ namespace Fulcrum.Dynamics
                             limit = j.DirectLimit > 0 ? angle - j.Lower : j.Upper - angle;
                         }
                         _error[i] = new Vector3(e1, e2, limit);
-                        if (_free[i] && j.DirectLimit != 0) dm[m + 35] = -Released;
+                        if (_free[i] && j.DirectLimit != 0) dm[m + At(5, 5)] = -Released;
                     }
                     continue;
                 }
                 if (_leaf[i]) continue; // D = M: its inverse is written below from the solver body
                 ref SolverBody body = ref bodies[_body[i]];
                 double mass = 1.0 / body.InverseMass;
-                dm[m] = dm[m + 7] = dm[m + 14] = mass;
-                if (!Invert3(body.InverseInertia, dm, m + 21)) return false;
+                dm[m] = dm[m + At(1, 1)] = dm[m + At(2, 2)] = mass;
+                if (!Invert3(body.InverseInertia, dm, m + At(3, 3))) return false;
             }
             for (int n = 0; n < _nodes; n++)
             {
-                int i = _order[n], d = Dim(i), m = 36 * i;
+                int i = _order[n], d = Dim(i), m = Block * i;
                 if (_joint[i] < 0 && _leaf[i])
                 {
                     // A body with no children: D = M, whose inverse the solver body holds.
                     ref SolverBody body = ref bodies[_body[i]];
-                    for (int k = 0; k < 36; k++) dm[m + k] = 0;
-                    dm[m] = dm[m + 7] = dm[m + 14] = body.InverseMass;
+                    for (int k = 0; k < Block; k++) dm[m + k] = 0;
+                    dm[m] = dm[m + At(1, 1)] = dm[m + At(2, 2)] = body.InverseMass;
                     Mat3 ii = body.InverseInertia;
-                    dm[m + 21] = ii.C0.X; dm[m + 22] = ii.C1.X; dm[m + 23] = ii.C2.X;
-                    dm[m + 27] = ii.C0.Y; dm[m + 28] = ii.C1.Y; dm[m + 29] = ii.C2.Y;
-                    dm[m + 33] = ii.C0.Z; dm[m + 34] = ii.C1.Z; dm[m + 35] = ii.C2.Z;
+                    dm[m + At(3, 3)] = ii.C0.X; dm[m + At(3, 4)] = ii.C1.X; dm[m + At(3, 5)] = ii.C2.X;
+                    dm[m + At(4, 3)] = ii.C0.Y; dm[m + At(4, 4)] = ii.C1.Y; dm[m + At(4, 5)] = ii.C2.Y;
+                    dm[m + At(5, 3)] = ii.C0.Z; dm[m + At(5, 4)] = ii.C1.Z; dm[m + At(5, 5)] = ii.C2.Z;
                 }
                 else if (!InvertDefinite(dm, m, d, _joint[i] >= 0 ? -1 : 1)) return false;
                 int p = _parent[i];
                 if (p < 0) continue;
-                int dp = Dim(p), mp = 36 * p;
+                int dp = Dim(p), mp = Block * p;
                 double[] h = _h;
-                for (int k = 0; k < 36; k++) h[m + k] = 0;
+                for (int k = 0; k < Block; k++) h[m + k] = 0;
                 if (_joint[i] >= 0) MinusJacobian(i, p, h, m, transpose: false);
                 else MinusJacobian(p, i, h, m, transpose: true);
                 // L_i = D_i^-1 H_ip; D_p -= H_ip^T L_i.
@@ -824,24 +832,24 @@ namespace Fulcrum.Dynamics
                     for (int c = 0; c < dp; c++)
                     {
                         double sum = 0;
-                        for (int k = 0; k < d; k++) sum += dm[m + 6 * r + k] * h[m + 6 * k + c];
-                        _l[m + 6 * r + c] = sum;
+                        for (int k = 0; k < d; k++) sum += dm[m + Stride * r + k] * h[m + Stride * k + c];
+                        _l[m + Stride * r + c] = sum;
                     }
                 // H^T D^-1 H is symmetric: the upper triangle, mirrored.
                 for (int r = 0; r < dp; r++)
                     for (int c = r; c < dp; c++)
                     {
                         double sum = 0;
-                        for (int k = 0; k < d; k++) sum += h[m + 6 * k + r] * _l[m + 6 * k + c];
-                        dm[mp + 6 * r + c] -= sum;
-                        if (c != r) dm[mp + 6 * c + r] -= sum;
+                        for (int k = 0; k < d; k++) sum += h[m + Stride * k + r] * _l[m + Stride * k + c];
+                        dm[mp + Stride * r + c] -= sum;
+                        if (c != r) dm[mp + Stride * c + r] -= sum;
                     }
             }
             return true;
         }
 
         // -J of joint node j against body node b: -s [I, -[r]] = [-s I, s [r]], s = +1 on B's side,
-        // -1 on A's ([r] w = r x w). Written as a 3x6 block, or transposed as 6x3, at h[at] (stride 6).
+        // -1 on A's ([r] w = r x w). Written as a 3x6 block, or transposed as 6x3, at h[at] (row stride Stride).
         void MinusJacobian(int j, int b, double[] h, int at, bool transpose)
         {
             bool sideB = _nodeB[j] == b;
@@ -854,8 +862,8 @@ namespace Fulcrum.Dynamics
                 for (int k = 0; k < 3; k++)
                 {
                     int row = 2 + k, c = 3 + k;
-                    if (transpose) h[at + 6 * c + row] = -s;
-                    else h[at + 6 * row + c] = -s;
+                    if (transpose) h[at + Stride * c + row] = -s;
+                    else h[at + Stride * row + c] = -s;
                 }
                 return;
             }
@@ -863,21 +871,19 @@ namespace Fulcrum.Dynamics
             {
                 // Along the rod and the two across it: -J = -s [a, r x a].
                 for (int row = 0; row < 3; row++) LinearRow(h, at, row, s, _axes[3 * j + row], r, transpose);
-                if (_tilt[j] == 0) return; // the tilt rows stay zero (and fully compliant)
-                // The tilt rows: -J = -s [a_k, r x a_k] - [0, e_k] on the tilting side, a_k the rod's
-                // line turning (TiltLine).
-                TiltLine(j, out Vector3 a1, out Vector3 a2);
-                LinearRow(h, at, 3, s, a1, r, transpose);
-                LinearRow(h, at, 4, s, a2, r, transpose);
-                if (_tilt[j] != (sideB ? 1 : -1)) return;
+                // The tilt rows of this body's end, if held: -J = [0, -e_k] (the other end's rows stay
+                // zero against this body, and unheld rows zero and fully compliant).
+                int side = sideB ? 1 : 0;
+                if ((_tilt[j] & (1 << side)) == 0) return;
+                int first = 3 + 2 * side;
                 for (int k = 0; k < 2; k++)
                 {
                     Vector3 e = _axes[3 * j + 1 + k];
                     for (int c = 0; c < 3; c++)
                     {
                         double v = c == 0 ? e.X : c == 1 ? e.Y : e.Z;
-                        if (transpose) h[at + 6 * (3 + c) + 3 + k] -= v;
-                        else h[at + 6 * (3 + k) + 3 + c] -= v;
+                        if (transpose) h[at + Stride * (3 + c) + first + k] = -v;
+                        else h[at + Stride * (first + k) + 3 + c] = -v;
                     }
                 }
                 return;
@@ -892,8 +898,8 @@ namespace Fulcrum.Dynamics
                 for (int col = 0; col < 6; col++)
                 {
                     double v = block[6 * row + col];
-                    if (transpose) h[at + 6 * col + row] = v;
-                    else h[at + 6 * row + col] = v;
+                    if (transpose) h[at + Stride * col + row] = v;
+                    else h[at + Stride * row + col] = v;
                 }
             // Rotation rows: -J = [0, -s u].
             for (int row = 3; row < _dim[j]; row++)
@@ -902,8 +908,8 @@ namespace Fulcrum.Dynamics
                 for (int c = 0; c < 3; c++)
                 {
                     double v = -s * (c == 0 ? u.X : c == 1 ? u.Y : u.Z);
-                    if (transpose) h[at + 6 * (3 + c) + row] = v;
-                    else h[at + 6 * row + 3 + c] = v;
+                    if (transpose) h[at + Stride * (3 + c) + row] = v;
+                    else h[at + Stride * row + 3 + c] = v;
                 }
             }
         }
@@ -915,57 +921,39 @@ namespace Fulcrum.Dynamics
             for (int c = 0; c < 6; c++)
             {
                 double v = -s * (c == 0 ? a.X : c == 1 ? a.Y : c == 2 ? a.Z : c == 3 ? ra.X : c == 4 ? ra.Y : ra.Z);
-                if (transpose) h[at + 6 * c + row] = v;
-                else h[at + 6 * row + c] = v;
+                if (transpose) h[at + Stride * c + row] = v;
+                else h[at + Stride * row + c] = v;
             }
         }
 
         /// <summary>
-        /// The compliance of a rod's two tilt rows, and which end they hold (<paramref name="side"/>:
-        /// +1 B, -1 A, 0 none, with compliance 1e12). A body pulled at an arm r by a rod under
-        /// tension T (force T u, u toward the rod's other end) hangs from that anchor like a pendulum
-        /// in a field T: turned by a small angle about an axis across the rod relative to the rod's
-        /// line, its energy rises by T (u . r) angle^2 / 2 (the second-order term of the anchor's
-        /// rotation, the rod's other geometric stiffness besides T / L across it). For a light bar
-        /// under a heavy load that stiffness outruns the substep: a 1 kg, 0.5 m bar between two
-        /// 0.1 m rods under 1000 kg turns at about 480 rad/s, and five of them swung 0.3 rad burst at
-        /// 4 substeps (40 m off in 10 s; 8 substeps held). The rows J v = e_k . w_body - (e_k x n) .
-        /// (the anchors' relative velocity) / L measure that relative turning (zero for the pair
-        /// turning rigidly, so the swing itself is not damped) with compliance 1 / (k h^2), implicit
-        /// as the rows across. One end per rod (the block holds at most six rows a joint): the one
-        /// where k h^2 I^-1 is the larger, when above 0.1 (a bar between two rods is held by one
-        /// of them; the other's stiffness is then no more than the implicit rows' inertia h^2 k carries).
+        /// The compliance of the two tilt rows of one end of a rod (B's with <paramref name="sideB"/>),
+        /// 1e12 where they stay out. A body pulled at an arm r by a rod under tension T (force T u,
+        /// u toward the rod's other end) hangs from that anchor like a pendulum in a field T: turned
+        /// by a small angle about an axis across the rod, its anchor moves in by r angle^2 / 2 and the
+        /// energy rises by T (u . r) angle^2 / 2: the second-order term of the anchor's rotation,
+        /// the rod's geometric stiffness besides T / L across it (the Hessian of T C in the body's
+        /// rotation, Tournier et al. 2015). For a light bar under a heavy load it outruns the
+        /// substep: a 1 kg, 0.5 m bar between two 0.1 m rods under 1000 kg turns at about 480 rad/s,
+        /// and five of them swung 0.3 rad burst at 4 substeps (40 m off in 10 s; 8 substeps held).
+        /// Implicit, as the rows across: rows J = [0, e_k] on the end's body, compliance
+        /// 1 / (k h^2), k = T (u . r), where k h^2 I^-1 is above 0.1. Like every implicit stiffness
+        /// they damp what turns the body, the swing too. Tried: measuring the turning against the
+        /// rod's line instead (zero for a rigid swing, so undamped) held the five bars to 1e4 kg, but
+        /// is not the Hessian (its lateral part is (u . r) / L times too stiff), and the explicit
+        /// remainder burst the chain from 1e5 kg; one end per rod (the block then held at most six
+        /// rows a joint) burst it from 3000 kg.
         /// </summary>
-        static double Tilt(SolverBody[] bodies, in JointData j, Vector3 armA, Vector3 armB, Vector3 n, Vector3 t1, Vector3 t2, float length, float pull, float h, out sbyte side)
+        static double Tilt(SolverBody[] bodies, in JointData j, bool sideB, Vector3 arm, Vector3 n, Vector3 t1, Vector3 t2, float length, float pull, float h)
         {
-            side = 0;
             if (!(pull > 0) || length < 1e-3f) return 1e12;
-            double best = 0.1, stiffness = 0;
-            for (int k = 0; k < 2; k++)
-            {
-                ref SolverBody body = ref bodies[k == 0 ? j.SolverA : j.SolverB];
-                if (body.IsDynamic != 1) continue;
-                Vector3 arm = k == 0 ? armA : armB;
-                float toward = k == 0 ? Vector3.Dot(n, arm) : -Vector3.Dot(n, arm);
-                double kc = pull * (double)toward;
-                if (!(kc > 0)) continue;
-                Mat3 ii = body.InverseInertia;
-                double ratio = kc * h * h * 0.5 * (Vector3.Dot(t1, ii * t1) + Vector3.Dot(t2, ii * t2));
-                if (ratio <= best) continue;
-                best = ratio;
-                stiffness = kc;
-                side = (sbyte)(k == 0 ? -1 : 1);
-            }
-            return side == 0 ? 1e12 : 1.0 / (stiffness * h * h);
-        }
-
-        // The linear parts a_k = -(e_k x n) / L of a distance node's tilt rows (e_1, e_2 the
-        // tangents t1, t2 = n x t1 across the rod, n = gap / L): a_1 = t2 / L, a_2 = -t1 / L.
-        void TiltLine(int node, out Vector3 a1, out Vector3 a2)
-        {
-            float length = _gap[node].Length();
-            a1 = _axes[3 * node + 2] / length;
-            a2 = -_axes[3 * node + 1] / length;
+            ref SolverBody body = ref bodies[sideB ? j.SolverB : j.SolverA];
+            if (body.IsDynamic != 1) return 1e12;
+            double stiffness = pull * (double)(sideB ? -Vector3.Dot(n, arm) : Vector3.Dot(n, arm));
+            if (!(stiffness > 0)) return 1e12;
+            Mat3 ii = body.InverseInertia;
+            double ratio = stiffness * h * h * 0.5 * (Vector3.Dot(t1, ii * t1) + Vector3.Dot(t2, ii * t2));
+            return ratio > 0.1 ? 1.0 / (stiffness * h * h) : 1e12;
         }
 
         /// <summary>Two unit vectors perpendicular to unit <paramref name="n"/> and to each other.</summary>
@@ -1004,7 +992,7 @@ namespace Fulcrum.Dynamics
             e2 = Vector3.Dot(axis, c2);
         }
 
-        // The inverse of a 3x3 (float) into the 3x3 corner at m[at] (stride 6), in double.
+        // The inverse of a 3x3 (float) into the 3x3 corner at m[at] (stride Stride), in double.
         static bool Invert3(in Mat3 a, double[] m, int at)
         {
             double a00 = a.C0.X, a01 = a.C1.X, a02 = a.C2.X;
@@ -1015,49 +1003,49 @@ namespace Fulcrum.Dynamics
             if (!(Math.Abs(det) > 0) || double.IsInfinity(det)) return false;
             double inv = 1.0 / det;
             m[at] = c00 * inv; m[at + 1] = c01 * inv; m[at + 2] = c02 * inv;
-            m[at + 6] = (a12 * a20 - a10 * a22) * inv; m[at + 7] = (a00 * a22 - a02 * a20) * inv; m[at + 8] = (a02 * a10 - a00 * a12) * inv;
-            m[at + 12] = (a10 * a21 - a11 * a20) * inv; m[at + 13] = (a01 * a20 - a00 * a21) * inv; m[at + 14] = (a00 * a11 - a01 * a10) * inv;
+            m[at + Stride] = (a12 * a20 - a10 * a22) * inv; m[at + Stride + 1] = (a00 * a22 - a02 * a20) * inv; m[at + Stride + 2] = (a02 * a10 - a00 * a12) * inv;
+            m[at + 2 * Stride] = (a10 * a21 - a11 * a20) * inv; m[at + 2 * Stride + 1] = (a01 * a20 - a00 * a21) * inv; m[at + 2 * Stride + 2] = (a00 * a11 - a01 * a10) * inv;
             return true;
         }
 
-        // In-place inverse of the symmetric d x d block at m[at] (stride 6), positive definite
+        // In-place inverse of the symmetric d x d block at m[at] (stride Stride), positive definite
         // times sign (a body's block is positive definite, a joint's negative): Cholesky
         // sign D = L L^T, then D^-1 = sign L^-T L^-1. About a third of Gauss-Jordan's work; false
         // (nothing written) when the block is not definite to working precision.
         static bool InvertDefinite(double[] m, int at, int d, double sign)
         {
-            Span<double> l = stackalloc double[36];
-            Span<double> li = stackalloc double[36];
+            Span<double> l = stackalloc double[Block];
+            Span<double> li = stackalloc double[Block];
             for (int j = 0; j < d; j++)
             {
-                double diag = sign * m[at + 7 * j];
-                for (int k = 0; k < j; k++) diag -= l[6 * j + k] * l[6 * j + k];
+                double diag = sign * m[at + (Stride + 1) * j];
+                for (int k = 0; k < j; k++) diag -= l[Stride * j + k] * l[Stride * j + k];
                 if (!(diag > 1e-300) || double.IsInfinity(diag)) return false;
                 double root = Math.Sqrt(diag);
-                l[7 * j] = root;
+                l[(Stride + 1) * j] = root;
                 for (int i = j + 1; i < d; i++)
                 {
-                    double sum = sign * m[at + 6 * i + j];
-                    for (int k = 0; k < j; k++) sum -= l[6 * i + k] * l[6 * j + k];
-                    l[6 * i + j] = sum / root;
+                    double sum = sign * m[at + Stride * i + j];
+                    for (int k = 0; k < j; k++) sum -= l[Stride * i + k] * l[Stride * j + k];
+                    l[Stride * i + j] = sum / root;
                 }
             }
             for (int j = 0; j < d; j++)
             {
-                li[7 * j] = 1 / l[7 * j];
+                li[(Stride + 1) * j] = 1 / l[(Stride + 1) * j];
                 for (int i = j + 1; i < d; i++)
                 {
                     double sum = 0;
-                    for (int k = j; k < i; k++) sum += l[6 * i + k] * li[6 * k + j];
-                    li[6 * i + j] = -sum / l[7 * i];
+                    for (int k = j; k < i; k++) sum += l[Stride * i + k] * li[Stride * k + j];
+                    li[Stride * i + j] = -sum / l[(Stride + 1) * i];
                 }
             }
             for (int r = 0; r < d; r++)
                 for (int c = r; c < d; c++)
                 {
                     double sum = 0;
-                    for (int k = c; k < d; k++) sum += li[6 * k + r] * li[6 * k + c];
-                    m[at + 6 * r + c] = m[at + 6 * c + r] = sign * sum;
+                    for (int k = c; k < d; k++) sum += li[Stride * k + r] * li[Stride * k + c];
+                    m[at + Stride * r + c] = m[at + Stride * c + r] = sign * sum;
                 }
             return true;
         }
