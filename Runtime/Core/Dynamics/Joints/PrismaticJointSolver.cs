@@ -82,9 +82,12 @@ namespace Fulcrum.Dynamics
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
             if (_motor) JointSolver.SolveMotor(ref k.Motor, ref a, ref b, j.MotorSpeed, j.MaxMotorForce * p.H);
-            if (_lower) k.LowerLimit.SolveLimit(ref a, ref b, _x - j.Lower, p.Joint, p.InvH, useBias);
-            if (_upper) k.UpperLimit.SolveLimit(ref a, ref b, j.Upper - _x, p.Joint, p.InvH, useBias);
-            if (j.DirectPoint) return; // the lock and the rows across the axis are in the joint trees' block
+            // A slider in a joint tree leaves a limit it rests on, and one still ahead, to the tree
+            // (JointTreeSolver.RestingSlide), as a tree hinge does its stop.
+            bool tree = j.DirectPoint;
+            if (_lower && j.DirectLimit <= 0 && !(tree && _x > j.Lower)) k.LowerLimit.SolveLimit(ref a, ref b, _x - j.Lower, p.Joint, p.InvH, useBias);
+            if (_upper && j.DirectLimit >= 0 && !(tree && _x < j.Upper)) k.UpperLimit.SolveLimit(ref a, ref b, j.Upper - _x, p.Joint, p.InvH, useBias);
+            if (tree) return; // the lock and the rows across the axis are in the joint trees' block
             k.Lock.Solve(ref a, ref b, _angle, p.Joint, useBias);
             k.Perp1.SolveEquality(ref a, ref b, _c1, p.Joint, useBias);
             k.Perp2.SolveEquality(ref a, ref b, _c2, p.Joint, useBias);
