@@ -5,7 +5,7 @@ namespace Fulcrum.SoftBodies
 {
     public sealed partial class SoftBody
     {
-        RangeJob? _tetJob;
+        ElementRangeJob? _tetJob;
         Vector3[]? _target;                 // Newton: the substep's inertial targets
         MembraneRangeJob? _membraneJob;
         BendingRangeJob? _bendingJob;
@@ -218,23 +218,9 @@ namespace Fulcrum.SoftBodies
         /// <summary>Every element family, colour by colour: the position solve, or the damping pass.</summary>
         void RunElements(float h, bool damping, IParallelScheduler? pool)
         {
-            if (Tets.Length > 0) RunColors(TetJob(h, damping), TetColors, pool, damping ? 1 : 0);
-            if (Tris.Length > 0)
-            {
-                _membraneJob ??= new MembraneRangeJob(this);
-                _membraneJob.H = h;
-                _membraneJob.DampingTime = DampingTime;
-                _membraneJob.Damping = damping;
-                RunColors(_membraneJob, TriColors, pool, damping ? 3 : 2);
-            }
-            if (Bends.Length > 0)
-            {
-                _bendingJob ??= new BendingRangeJob(this);
-                _bendingJob.H = h;
-                _bendingJob.DampingTime = DampingTime;
-                _bendingJob.Damping = damping;
-                RunColors(_bendingJob, BendColors, pool, damping ? 5 : 4);
-            }
+            if (Tets.Length > 0) RunColors(TetJob().For(h, DampingTime, damping), TetColors, pool, damping ? 1 : 0);
+            if (Tris.Length > 0) RunColors((_membraneJob ??= new MembraneRangeJob(this)).For(h, DampingTime, damping), TriColors, pool, damping ? 3 : 2);
+            if (Bends.Length > 0) RunColors((_bendingJob ??= new BendingRangeJob(this)).For(h, DampingTime, damping), BendColors, pool, damping ? 5 : 4);
         }
 
         /// <summary>Once per world step, after the substeps.</summary>
@@ -254,25 +240,10 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        RangeJob TetJob(float h, bool damping)
-        {
-            if (Material.Model == MaterialModel.NeoHookean)
-            {
-                var job = (TetRangeJob<NeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<NeoHookeanEnergy>(this, ClassicModel));
-                job.H = h;
-                job.DampingTime = DampingTime;
-                job.Damping = damping;
-                return job;
-            }
-            else
-            {
-                var job = (TetRangeJob<StableNeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<StableNeoHookeanEnergy>(this, StableModel));
-                job.H = h;
-                job.DampingTime = DampingTime;
-                job.Damping = damping;
-                return job;
-            }
-        }
+        // The tet job, specialised for the body's material model (which does not change).
+        ElementRangeJob TetJob() => _tetJob ??= Material.Model == MaterialModel.NeoHookean
+            ? new TetRangeJob<NeoHookeanEnergy>(this, ClassicModel)
+            : new TetRangeJob<StableNeoHookeanEnergy>(this, StableModel);
 
         // Elements a thread takes at a time: a colour of fewer than two such chunks runs on the
         // caller, as waking a thread costs more than a few hundred elements (measured: with
