@@ -53,8 +53,7 @@ namespace Fulcrum.SoftBodies
                 float invV = 1f / tets.RestVolume[e];
                 if (!XpbdConstraintPair.Solve(g[24 * n + e] + invD * invV, g[25 * n + e], g[26 * n + e] + invH * invV, sD, sH, out float mD, out float mH)) continue;
                 Vector3 p0 = -(mD * gD0 + mH * gH0), p1 = -(mD * gD1 + mH * gH1), p2 = -(mD * gD2 + mH * gH2), p3 = -(mD * gD3 + mH * gH3);
-                if (free[a] > 0f && free[b] > 0f && free[c] > 0f && free[d] > 0f)
-                    TorqueFree.Project(x[a], x[b], x[c], x[d], m[a], m[b], m[c], m[d], ref p0, ref p1, ref p2, ref p3);
+                TorqueFree.ProjectIfFree(a, b, c, d, x, m, free, ref p0, ref p1, ref p2, ref p3);
                 v[a] = v0 + w0 * p0;
                 v[b] = v1 + w1 * p1;
                 v[c] = v2 + w2 * p2;

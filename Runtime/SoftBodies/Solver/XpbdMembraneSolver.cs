@@ -41,8 +41,7 @@ namespace Fulcrum.SoftBodies
                 lambda.X += dlD;
                 lambda.Y += dlH;
                 Vector3 q0 = dlD * d0 + dlH * g0, q1 = dlD * d1 + dlH * g1, q2 = dlD * d2 + dlH * g2;
-                if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f)
-                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], m[t.A], m[t.B], m[t.C], ref q0, ref q1, ref q2);
+                TorqueFree.ProjectIfFree(t.A, t.B, t.C, xPrev, m, free, ref q0, ref q1, ref q2);
                 x[t.A] = x0 + w0 * q0;
                 x[t.B] = x1 + w1 * q1;
                 x[t.C] = x2 + w2 * q2;
