@@ -174,14 +174,7 @@ namespace Fulcrum.SoftBodies
                 RunElements(h, damping: false, pool);
                 if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
             }
-            // Friction again after the elastic pass, on the substep's whole slip, within what is
-            // left of the cone: measured only up to the contact pass it missed the slip the
-            // elastic pass adds, and a jelly crept 4 cm/s down a 30 degree slope with mu = 0.8.
-            // (Not the normal constraint: projected after the elastic pass it locks strain in.)
-            if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: false);
-            SelfContacts?.Solve(X, W);
-            float invH = 1f / h;
-            for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;
+            EndPositions(h, coupling);
             if (DampingTime > 0f)
             {
                 for (int k = 0; k < Attachments.Length; k++) AttachedVelocity[k] = V[Attachments[k].Vertex];
@@ -209,6 +202,19 @@ namespace Fulcrum.SoftBodies
                 // pressed on the tets is taken back before the next Newton step sees it.
                 if (Tets.Length > 0) VolumeFloor.HoldAll(TetData, X, 0, Tets.Length);
             }
+            EndPositions(h, coupling);
+        }
+
+        /// <summary>
+        /// The end of a substep's position solve (XPBD or Newton): friction, self-contacts, and the
+        /// velocities from the change in position (zero for pinned vertices).
+        /// </summary>
+        void EndPositions(float h, RigidCoupling coupling)
+        {
+            // Friction again after the elastic pass, on the substep's whole slip, within what is
+            // left of the cone: measured only up to the contact pass it missed the slip the
+            // elastic pass adds, and a jelly crept 4 cm/s down a 30 degree slope with mu = 0.8.
+            // (Not the normal constraint: projected after the elastic pass it locks strain in.)
             if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: false);
             SelfContacts?.Solve(X, W);
             float invH = 1f / h;
