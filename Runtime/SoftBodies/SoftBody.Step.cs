@@ -5,7 +5,7 @@ namespace Fulcrum.SoftBodies
 {
     public sealed partial class SoftBody
     {
-        RangeJob? _tetJob;
+        ElementRangeJob? _tetJob;
         Vector3[]? _target;                 // Newton: the substep's inertial targets
         MembraneRangeJob? _membraneJob;
         BendingRangeJob? _bendingJob;
@@ -174,14 +174,7 @@ namespace Fulcrum.SoftBodies
                 RunElements(h, damping: false, pool);
                 if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
             }
-            // Friction again after the elastic pass, on the substep's whole slip, within what is
-            // left of the cone: measured only up to the contact pass it missed the slip the
-            // elastic pass adds, and a jelly crept 4 cm/s down a 30 degree slope with mu = 0.8.
-            // (Not the normal constraint: projected after the elastic pass it locks strain in.)
-            if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: false);
-            SelfContacts?.Solve(X, W);
-            float invH = 1f / h;
-            for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;
+            EndPositions(h, coupling);
             if (DampingTime > 0f)
             {
                 for (int k = 0; k < Attachments.Length; k++) AttachedVelocity[k] = V[Attachments[k].Vertex];
@@ -209,6 +202,19 @@ namespace Fulcrum.SoftBodies
                 // pressed on the tets is taken back before the next Newton step sees it.
                 if (Tets.Length > 0) VolumeFloor.HoldAll(TetData, X, 0, Tets.Length);
             }
+            EndPositions(h, coupling);
+        }
+
+        /// <summary>
+        /// The end of a substep's position solve (XPBD or Newton): friction, self-contacts, and the
+        /// velocities from the change in position (zero for pinned vertices).
+        /// </summary>
+        void EndPositions(float h, RigidCoupling coupling)
+        {
+            // Friction again after the elastic pass, on the substep's whole slip, within what is
+            // left of the cone: measured only up to the contact pass it missed the slip the
+            // elastic pass adds, and a jelly crept 4 cm/s down a 30 degree slope with mu = 0.8.
+            // (Not the normal constraint: projected after the elastic pass it locks strain in.)
             if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: false);
             SelfContacts?.Solve(X, W);
             float invH = 1f / h;
@@ -218,23 +224,9 @@ namespace Fulcrum.SoftBodies
         /// <summary>Every element family, colour by colour: the position solve, or the damping pass.</summary>
         void RunElements(float h, bool damping, IParallelScheduler? pool)
         {
-            if (Tets.Length > 0) RunColors(TetJob(h, damping), TetColors, pool, damping ? 1 : 0);
-            if (Tris.Length > 0)
-            {
-                _membraneJob ??= new MembraneRangeJob(this);
-                _membraneJob.H = h;
-                _membraneJob.DampingTime = DampingTime;
-                _membraneJob.Damping = damping;
-                RunColors(_membraneJob, TriColors, pool, damping ? 3 : 2);
-            }
-            if (Bends.Length > 0)
-            {
-                _bendingJob ??= new BendingRangeJob(this);
-                _bendingJob.H = h;
-                _bendingJob.DampingTime = DampingTime;
-                _bendingJob.Damping = damping;
-                RunColors(_bendingJob, BendColors, pool, damping ? 5 : 4);
-            }
+            if (Tets.Length > 0) RunColors(TetJob().For(h, DampingTime, damping), TetColors, pool, damping ? 1 : 0);
+            if (Tris.Length > 0) RunColors((_membraneJob ??= new MembraneRangeJob(this)).For(h, DampingTime, damping), TriColors, pool, damping ? 3 : 2);
+            if (Bends.Length > 0) RunColors((_bendingJob ??= new BendingRangeJob(this)).For(h, DampingTime, damping), BendColors, pool, damping ? 5 : 4);
         }
 
         /// <summary>Once per world step, after the substeps.</summary>
@@ -254,25 +246,10 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        RangeJob TetJob(float h, bool damping)
-        {
-            if (Material.Model == MaterialModel.NeoHookean)
-            {
-                var job = (TetRangeJob<NeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<NeoHookeanEnergy>(this, ClassicModel));
-                job.H = h;
-                job.DampingTime = DampingTime;
-                job.Damping = damping;
-                return job;
-            }
-            else
-            {
-                var job = (TetRangeJob<StableNeoHookeanEnergy>)(_tetJob ??= new TetRangeJob<StableNeoHookeanEnergy>(this, StableModel));
-                job.H = h;
-                job.DampingTime = DampingTime;
-                job.Damping = damping;
-                return job;
-            }
-        }
+        // The tet job, specialised for the body's material model (which does not change).
+        ElementRangeJob TetJob() => _tetJob ??= Material.Model == MaterialModel.NeoHookean
+            ? new TetRangeJob<NeoHookeanEnergy>(this, ClassicModel)
+            : new TetRangeJob<StableNeoHookeanEnergy>(this, StableModel);
 
         // Elements a thread takes at a time: a colour of fewer than two such chunks runs on the
         // caller, as waking a thread costs more than a few hundred elements (measured: with

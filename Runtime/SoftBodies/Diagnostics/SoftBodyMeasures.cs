@@ -56,9 +56,7 @@ namespace Fulcrum.SoftBodies
         public static void Membrane(SoftBody body, int e, out Vector3 f0, out Vector3 f1)
         {
             ref TriangleElement t = ref body.Tris[e];
-            Vector3 e1 = body.X[t.B] - body.X[t.A], e2 = body.X[t.C] - body.X[t.A];
-            f0 = e1 * t.Inv00 + e2 * t.Inv10;
-            f1 = e1 * t.Inv01 + e2 * t.Inv11;
+            t.Deformation(body.X[t.A], body.X[t.B], body.X[t.C], out f0, out f1);
         }
 
         public static float EnergyDensity(SoftBody body, in Mat3 f) =>

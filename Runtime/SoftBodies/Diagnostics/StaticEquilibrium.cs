@@ -22,7 +22,7 @@ namespace Fulcrum.SoftBodies
         readonly double[] _volume;
         readonly double[] _force;
         readonly bool[] _fixed;
-        readonly double[] _h, _g, _d, _trial, _c, _p, _dp;
+        readonly double[] _h, _g, _d, _trial, _c, _p;
         readonly NeoHookeanTangent _tangent;
 
         /// <summary>Current positions, 3 per vertex (x, y, z); starts at the rest shape.</summary>
@@ -79,7 +79,6 @@ namespace Fulcrum.SoftBodies
             _trial = new double[3 * _n];
             _c = new double[81];
             _p = new double[9];
-            _dp = new double[9];
         }
 
         /// <summary>Adds the lumped weight m_i g of every vertex to the load.</summary>
@@ -191,7 +190,6 @@ namespace Fulcrum.SoftBodies
             if (hessian) Array.Clear(_h, 0, _h.Length);
             double e = 0;
             var f = new double[9];
-            var unit = new double[9];
             for (int t = 0; t < _volume.Length; t++)
             {
                 DeformationGradientOf(x, t, f);
@@ -210,14 +208,7 @@ namespace Fulcrum.SoftBodies
                     }
                 }
                 if (!hessian) continue;
-                // C[(i,j),(l,q)] = d P_ij / d F_lq, one directional derivative per unit dF.
-                for (int lq = 0; lq < 9; lq++)
-                {
-                    Array.Clear(unit, 0, 9);
-                    unit[lq] = 1;
-                    _tangent.StressDifferential(f, unit, _dp);
-                    for (int ij = 0; ij < 9; ij++) _c[9 * ij + lq] = _dp[ij];
-                }
+                _tangent.Tangent(f, _c);
                 // K[(a,i),(b,l)] = V sum_j sum_q r_a[j] C[(i,j),(l,q)] r_b[q].
                 for (int a = 0; a < 4; a++)
                 {

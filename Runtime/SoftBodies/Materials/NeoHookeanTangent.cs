@@ -69,6 +69,23 @@ namespace Fulcrum.SoftBodies
             }
         }
 
+        /// <summary>
+        /// The whole tangent C[(i,j),(l,q)] = dP_ij / dF_lq at F into <paramref name="c"/> (81 values, at 9 ij + lq),
+        /// one directional derivative (<see cref="StressDifferential"/>) per unit dF.
+        /// </summary>
+        public void Tangent(ReadOnlySpan<double> f, Span<double> c)
+        {
+            Span<double> unit = stackalloc double[9];
+            Span<double> dp = stackalloc double[9];
+            for (int lq = 0; lq < 9; lq++)
+            {
+                unit.Clear();
+                unit[lq] = 1;
+                StressDifferential(f, unit, dp);
+                for (int ij = 0; ij < 9; ij++) c[9 * ij + lq] = dp[ij];
+            }
+        }
+
         /// <summary>dP along dF. cof is quadratic in F, so its differential is exactly (cof(F + dF) - cof(F - dF)) / 2.</summary>
         public void StressDifferential(ReadOnlySpan<double> f, ReadOnlySpan<double> df, Span<double> dp)
         {

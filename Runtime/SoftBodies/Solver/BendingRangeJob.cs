@@ -1,18 +1,15 @@
 namespace Fulcrum.SoftBodies
 {
-    /// <summary>One colour range of bending hinges.</summary>
-    internal sealed class BendingRangeJob : RangeJob
+    /// <summary>One colour range of bending hinges: the position solve, or with <see cref="ElementRangeJob.Damping"/> the velocity damping pass.</summary>
+    internal sealed class BendingRangeJob : ElementRangeJob
     {
-        readonly SoftBody _body;
-        public float H, DampingTime;
-        public bool Damping;
-
-        public BendingRangeJob(SoftBody body) => _body = body;
+        public BendingRangeJob(SoftBody body) : base(body) { }
 
         public override void Execute(int start, int end)
         {
-            if (Damping) RayleighDamping.Bends(_body.Bends, _body.X, _body.V, _body.W, start, end, H, DampingTime);
-            else XpbdBendingSolver.Solve(_body.Bends, _body.BendLambda, _body.X, _body.XPrev, _body.W, _body.M, _body.FreeW, start, end, H);
+            SoftBody b = Body;
+            if (Damping) RayleighDamping.Bends(b.Bends, b.X, b.V, b.W, start, end, H, DampingTime);
+            else XpbdBendingSolver.Solve(b.Bends, b.BendLambda, b.X, b.XPrev, b.W, b.M, b.FreeW, start, end, H);
         }
     }
 }

@@ -113,8 +113,6 @@ namespace Fulcrum.SoftBodies
 
             Span<double> f = stackalloc double[9];
             Span<double> p = stackalloc double[9];
-            Span<double> unit = stackalloc double[9];
-            Span<double> dp = stackalloc double[9];
             Span<double> c = stackalloc double[81];
             Span<int> v = stackalloc int[4];
             Span<double> rest = _rows;
@@ -134,14 +132,7 @@ namespace Fulcrum.SoftBodies
                     }
                 double volume = t.RestVolume;
                 _tangent.Stress(f, p);
-                // C[(i,j),(l,q)] = dP_ij / dF_lq, one directional derivative per unit dF.
-                for (int lq = 0; lq < 9; lq++)
-                {
-                    unit.Clear();
-                    unit[lq] = 1;
-                    _tangent.StressDifferential(f, unit, dp);
-                    for (int ij = 0; ij < 9; ij++) c[9 * ij + lq] = dp[ij];
-                }
+                _tangent.Tangent(f, c);
                 for (int a = 0; a < 4; a++)
                 {
                     int ra = 3 * _order[v[a]];

@@ -1,18 +1,15 @@
 namespace Fulcrum.SoftBodies
 {
-    /// <summary>One colour range of membrane triangles: the position solve, or with <see cref="Damping"/> the velocity damping pass.</summary>
-    internal sealed class MembraneRangeJob : RangeJob
+    /// <summary>One colour range of membrane triangles: the position solve, or with <see cref="ElementRangeJob.Damping"/> the velocity damping pass.</summary>
+    internal sealed class MembraneRangeJob : ElementRangeJob
     {
-        readonly SoftBody _body;
-        public float H, DampingTime;
-        public bool Damping;
-
-        public MembraneRangeJob(SoftBody body) => _body = body;
+        public MembraneRangeJob(SoftBody body) : base(body) { }
 
         public override void Execute(int start, int end)
         {
-            if (Damping) RayleighDamping.Membranes(_body.MembraneModel, _body.Thickness, _body.Tris, _body.X, _body.V, _body.W, start, end, H, DampingTime);
-            else XpbdMembraneSolver.Solve(_body.MembraneModel, _body.Thickness, _body.Tris, _body.TriLambda, _body.X, _body.XPrev, _body.W, _body.M, _body.FreeW, start, end, H);
+            SoftBody b = Body;
+            if (Damping) RayleighDamping.Membranes(b.MembraneModel, b.Thickness, b.Tris, b.X, b.V, b.W, start, end, H, DampingTime);
+            else XpbdMembraneSolver.Solve(b.MembraneModel, b.Thickness, b.Tris, b.TriLambda, b.X, b.XPrev, b.W, b.M, b.FreeW, start, end, H);
         }
     }
 }

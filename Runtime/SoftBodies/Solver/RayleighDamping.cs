@@ -53,8 +53,7 @@ namespace Fulcrum.SoftBodies
                 float invV = 1f / tets.RestVolume[e];
                 if (!XpbdConstraintPair.Solve(g[24 * n + e] + invD * invV, g[25 * n + e], g[26 * n + e] + invH * invV, sD, sH, out float mD, out float mH)) continue;
                 Vector3 p0 = -(mD * gD0 + mH * gH0), p1 = -(mD * gD1 + mH * gH1), p2 = -(mD * gD2 + mH * gH2), p3 = -(mD * gD3 + mH * gH3);
-                if (free[a] > 0f && free[b] > 0f && free[c] > 0f && free[d] > 0f)
-                    TorqueFree.Project(x[a], x[b], x[c], x[d], m[a], m[b], m[c], m[d], ref p0, ref p1, ref p2, ref p3);
+                TorqueFree.ProjectIfFree(a, b, c, d, x, m, free, ref p0, ref p1, ref p2, ref p3);
                 v[a] = v0 + w0 * p0;
                 v[b] = v1 + w1 * p1;
                 v[c] = v2 + w2 * p2;
@@ -72,12 +71,10 @@ namespace Fulcrum.SoftBodies
                 ref TriangleElement t = ref tris[e];
                 float w0 = w[t.A], w1 = w[t.B], w2 = w[t.C];
                 if (w0 + w1 + w2 == 0f) continue;
-                Vector3 e1 = x[t.B] - x[t.A], e2 = x[t.C] - x[t.A];
-                Vector3 f0 = e1 * t.Inv00 + e2 * t.Inv10;
-                Vector3 f1 = e1 * t.Inv01 + e2 * t.Inv11;
+                t.Deformation(x[t.A], x[t.B], x[t.C], out Vector3 f0, out Vector3 f1);
                 model.Constraints(f0, f1, out _, out Vector3 dD0, out Vector3 dD1, out _, out Vector3 dH0, out Vector3 dH1);
-                Vector3 d1 = dD0 * t.Inv00 + dD1 * t.Inv01, d2 = dD0 * t.Inv10 + dD1 * t.Inv11, d0 = -(d1 + d2);
-                Vector3 g1 = dH0 * t.Inv00 + dH1 * t.Inv01, g2 = dH0 * t.Inv10 + dH1 * t.Inv11, g0 = -(g1 + g2);
+                t.VertexGradients(dD0, dD1, out Vector3 d0, out Vector3 d1, out Vector3 d2);
+                t.VertexGradients(dH0, dH1, out Vector3 g0, out Vector3 g1, out Vector3 g2);
                 Vector3 v0 = v[t.A], v1 = v[t.B], v2 = v[t.C];
                 float sD = Vector3.Dot(d0, v0) + Vector3.Dot(d1, v1) + Vector3.Dot(d2, v2);
                 float sH = Vector3.Dot(g0, v0) + Vector3.Dot(g1, v1) + Vector3.Dot(g2, v2);

@@ -2,24 +2,17 @@ namespace Fulcrum.SoftBodies
 {
     /// <summary>
     /// One colour range of tets for the <see cref="IParallelScheduler"/>: the position solve, or with
-    /// <see cref="Damping"/> the velocity damping pass. The model is a type argument so the loop is specialised.
+    /// <see cref="ElementRangeJob.Damping"/> the velocity damping pass. The model is a type argument so the loop is specialised.
     /// </summary>
-    internal sealed class TetRangeJob<TModel> : RangeJob where TModel : struct, IHyperelasticModel
+    internal sealed class TetRangeJob<TModel> : ElementRangeJob where TModel : struct, IHyperelasticModel
     {
-        readonly SoftBody _body;
         readonly TModel _model;
-        public float H, DampingTime;
-        public bool Damping;
 
-        public TetRangeJob(SoftBody body, in TModel model)
-        {
-            _body = body;
-            _model = model;
-        }
+        public TetRangeJob(SoftBody body, in TModel model) : base(body) => _model = model;
 
         public override void Execute(int start, int end)
         {
-            SoftBody b = _body;
+            SoftBody b = Body;
             if (Damping)
             {
 #if NET

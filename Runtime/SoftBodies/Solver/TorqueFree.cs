@@ -36,6 +36,20 @@ namespace Fulcrum.SoftBodies
             g3 -= Vector3.Cross(omega, q3);
         }
 
+        /// <summary>
+        /// <see cref="Project(Vector3, Vector3, Vector3, Vector3, float, float, float, float, ref Vector3, ref Vector3, ref Vector3, ref Vector3)"/>
+        /// about the positions <paramref name="about"/> of vertices a, b, c, d, where all four are free
+        /// (<paramref name="free"/> &gt; 0); an element with a pinned or attached vertex keeps its
+        /// impulses, as the rigid rotation would move the fixed vertex.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void ProjectIfFree(int a, int b, int c, int d, Vector3[] about, float[] m, float[] free,
+            ref Vector3 g0, ref Vector3 g1, ref Vector3 g2, ref Vector3 g3)
+        {
+            if (free[a] > 0f && free[b] > 0f && free[c] > 0f && free[d] > 0f)
+                Project(about[a], about[b], about[c], about[d], m[a], m[b], m[c], m[d], ref g0, ref g1, ref g2, ref g3);
+        }
+
         /// <summary>The same for a triangle (3 vertices).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Project(Vector3 p0, Vector3 p1, Vector3 p2, float m0, float m1, float m2,
@@ -51,6 +65,15 @@ namespace Fulcrum.SoftBodies
             g0 -= Vector3.Cross(omega, q0);
             g1 -= Vector3.Cross(omega, q1);
             g2 -= Vector3.Cross(omega, q2);
+        }
+
+        /// <summary>The same for a triangle a, b, c.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void ProjectIfFree(int a, int b, int c, Vector3[] about, float[] m, float[] free,
+            ref Vector3 g0, ref Vector3 g1, ref Vector3 g2)
+        {
+            if (free[a] > 0f && free[b] > 0f && free[c] > 0f)
+                Project(about[a], about[b], about[c], m[a], m[b], m[c], ref g0, ref g1, ref g2);
         }
 
         // Solves I omega = torque for the inertia I = tr(S) 1 - S of the second moments S

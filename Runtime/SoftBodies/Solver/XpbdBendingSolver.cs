@@ -33,8 +33,7 @@ namespace Fulcrum.SoftBodies
                 float dl = r / denom;
                 lambdas[e] += dl;
                 ga *= dl; gb *= dl; gc *= dl; gd *= dl;
-                if (free[b.A] > 0f && free[b.B] > 0f && free[b.C] > 0f && free[b.D] > 0f)
-                    TorqueFree.Project(xPrev[b.A], xPrev[b.B], xPrev[b.C], xPrev[b.D], m[b.A], m[b.B], m[b.C], m[b.D], ref ga, ref gb, ref gc, ref gd);
+                TorqueFree.ProjectIfFree(b.A, b.B, b.C, b.D, xPrev, m, free, ref ga, ref gb, ref gc, ref gd);
                 x[b.A] = xa + wa * ga;
                 x[b.B] = xb + wb * gb;
                 x[b.C] = xc + wc * gc;

@@ -22,13 +22,10 @@ namespace Fulcrum.SoftBodies
                 float w0 = w[t.A], w1 = w[t.B], w2 = w[t.C];
                 if (w0 + w1 + w2 == 0f) continue;
                 Vector3 x0 = x[t.A], x1 = x[t.B], x2 = x[t.C];
-                Vector3 e1 = x1 - x0, e2 = x2 - x0;
-                Vector3 f0 = e1 * t.Inv00 + e2 * t.Inv10;
-                Vector3 f1 = e1 * t.Inv01 + e2 * t.Inv11;
+                t.Deformation(x0, x1, x2, out Vector3 f0, out Vector3 f1);
                 model.Constraints(f0, f1, out float cD, out Vector3 dD0, out Vector3 dD1, out float cH, out Vector3 dH0, out Vector3 dH1);
-                // dC/d(x_k) = sum_j dC/df_j Dm^-1[k, j] for k = 1, 2; x_0 takes minus the sum.
-                Vector3 d1 = dD0 * t.Inv00 + dD1 * t.Inv01, d2 = dD0 * t.Inv10 + dD1 * t.Inv11, d0 = -(d1 + d2);
-                Vector3 g1 = dH0 * t.Inv00 + dH1 * t.Inv01, g2 = dH0 * t.Inv10 + dH1 * t.Inv11, g0 = -(g1 + g2);
+                t.VertexGradients(dD0, dD1, out Vector3 d0, out Vector3 d1, out Vector3 d2);
+                t.VertexGradients(dH0, dH1, out Vector3 g0, out Vector3 g1, out Vector3 g2);
                 float kDD = w0 * d0.LengthSquared() + w1 * d1.LengthSquared() + w2 * d2.LengthSquared();
                 float kHH = w0 * g0.LengthSquared() + w1 * g1.LengthSquared() + w2 * g2.LengthSquared();
                 float kDH = w0 * Vector3.Dot(d0, g0) + w1 * Vector3.Dot(d1, g1) + w2 * Vector3.Dot(d2, g2);
@@ -41,8 +38,7 @@ namespace Fulcrum.SoftBodies
                 lambda.X += dlD;
                 lambda.Y += dlH;
                 Vector3 q0 = dlD * d0 + dlH * g0, q1 = dlD * d1 + dlH * g1, q2 = dlD * d2 + dlH * g2;
-                if (free[t.A] > 0f && free[t.B] > 0f && free[t.C] > 0f)
-                    TorqueFree.Project(xPrev[t.A], xPrev[t.B], xPrev[t.C], m[t.A], m[t.B], m[t.C], ref q0, ref q1, ref q2);
+                TorqueFree.ProjectIfFree(t.A, t.B, t.C, xPrev, m, free, ref q0, ref q1, ref q2);
                 x[t.A] = x0 + w0 * q0;
                 x[t.B] = x1 + w1 * q1;
                 x[t.C] = x2 + w2 * q2;

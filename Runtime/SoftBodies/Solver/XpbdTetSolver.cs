@@ -75,8 +75,7 @@ namespace Fulcrum.SoftBodies
                 lambda.X += dlD;
                 lambda.Y += dlH;
                 Vector3 g0 = dlD * d0 + dlH * h0, g1 = dlD * d1 + dlH * h1, g2 = dlD * d2 + dlH * h2, g3 = dlD * d3 + dlH * h3;
-                if (free[a] > 0f && free[b] > 0f && free[c] > 0f && free[d] > 0f)
-                    TorqueFree.Project(xPrev[a], xPrev[b], xPrev[c], xPrev[d], m[a], m[b], m[c], m[d], ref g0, ref g1, ref g2, ref g3);
+                TorqueFree.ProjectIfFree(a, b, c, d, xPrev, m, free, ref g0, ref g1, ref g2, ref g3);
                 x[a] = x0 + w0 * g0;
                 x[b] = x1 + w1 * g1;
                 x[c] = x2 + w2 * g2;

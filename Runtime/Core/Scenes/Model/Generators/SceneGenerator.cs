@@ -71,6 +71,25 @@ namespace Fulcrum.Scenes
             Position = position,
         };
 
+        /// <summary>
+        /// Row <paramref name="row"/> of a flat stack of boxes of <see cref="Size"/> ([along, up, across]) in the
+        /// vertical plane along <paramref name="axis"/> (pyramid, wall): <paramref name="n"/> boxes <see cref="Spacing"/>
+        /// apart, centred on <see cref="At"/>, on the rows below (row 0 rests on y = at.y), named from
+        /// <paramref name="index"/> on in the +axis direction.
+        /// </summary>
+        private protected void AddRow(List<SceneBody> bodies, SceneAxis axis, int row, int n, ref int index)
+        {
+            Vector3 along = SceneAxisFrame.Along(axis);
+            Vector3 worldSize = SceneAxisFrame.ToWorld(axis, Size);
+            float pitch = Size.X + Spacing;
+            float y = At.Y + 0.5f * Size.Y + row * Size.Y;
+            for (int j = 0; j < n; j++)
+            {
+                Vector3 p = At + along * ((j - 0.5f * (n - 1)) * pitch);
+                bodies.Add(NewBody(index++, new Vector3(p.X, y, p.Z), BoxOf(worldSize)));
+            }
+        }
+
         /// <summary>A box shape of full size <paramref name="worldSize"/>.</summary>
         protected static SceneBox BoxOf(Vector3 worldSize) => new SceneBox { HalfExtents = worldSize * 0.5f };
     }

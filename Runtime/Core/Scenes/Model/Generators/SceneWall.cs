@@ -48,20 +48,8 @@ namespace Fulcrum.Scenes
         /// <inheritdoc/>
         public override void Expand(List<SceneBody> bodies, List<SceneJoint> joints)
         {
-            Vector3 along = SceneAxisFrame.Along(Axis);
-            Vector3 worldSize = SceneAxisFrame.ToWorld(Axis, Size);
-            float pitch = Size.X + Spacing;
             int index = 0;
-            for (int row = 0; row < Rows; row++)
-            {
-                int n = RowCount(row);
-                float y = At.Y + 0.5f * Size.Y + row * Size.Y;
-                for (int j = 0; j < n; j++)
-                {
-                    Vector3 p = At + along * ((j - 0.5f * (n - 1)) * pitch);
-                    bodies.Add(NewBody(index++, new Vector3(p.X, y, p.Z), BoxOf(worldSize)));
-                }
-            }
+            for (int row = 0; row < Rows; row++) AddRow(bodies, Axis, row, RowCount(row), ref index);
         }
     }
 }
