@@ -10,7 +10,7 @@ namespace Fulcrum.Tests.Robustness
     /// world bounds: World.Diverged never fires). The failing seeds are listed one per line so
     /// each can be replayed on its own.
     /// <para>
-    /// Known and not yet fixed: in 3 of seeds 0-19999 (10447, 14973, 16527; `fulcrum fuzz`)
+    /// Known and not yet fixed: in 4 of seeds 0-19999 (10447, 12747, 14973, 16527; `fulcrum fuzz`)
     /// the mechanical energy still rises above what motors and corrections may add, by at most
     /// 21 %. The counts here are measured and held as ceilings, so they can only go down.
     /// </para>
