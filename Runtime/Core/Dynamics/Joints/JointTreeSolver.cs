@@ -323,7 +323,7 @@ namespace Fulcrum.Dynamics
                 _body[jn] = -1;
                 _joint[jn] = _direct[k];
                 _rows[jn] = j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic || j.DirectRotation ? j.Kind : JointKind.Ball;
-                _dim[jn] = j.Kind == JointKind.Distance ? 7 : j.Kind == JointKind.Prismatic ? (j.DirectLimit != 0 ? 6 : 5)
+                _dim[jn] = j.Kind == JointKind.Distance ? 3 : j.Kind == JointKind.Prismatic ? (j.DirectLimit != 0 ? 6 : 5)
                     : j.DirectRotation ? (j.Kind == JointKind.Fixed || j.DirectLimit != 0 ? 6 : 5) : 3;
                 _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
@@ -844,6 +844,10 @@ namespace Fulcrum.Dynamics
                             dm[m + At(3 + 2 * side, 3 + 2 * side)] = -tilt;
                             dm[m + At(4 + 2 * side, 4 + 2 * side)] = -tilt;
                         }
+                        // A rod no end of which is held (the common case: a light pull, or arms at
+                        // the centres) keeps its three rows, so it costs what it did without tilt rows:
+                        // the slots stay Stride wide, and rows 3-6 are zero and uncoupled anyway.
+                        _dim[i] = _tilt[i] != 0 ? 7 : 3;
                         if (_free[i]) // slack: no tension, no stiffness
                             for (int row = 0; row < 7; row++) dm[m + At(row, row)] = -Released;
                     }
