@@ -17,9 +17,7 @@ namespace Fulcrum.Components
             {
                 if (!(Validate.IsFinite(value) && value.X > 0 && value.Y > 0 && value.Z > 0))
                     throw new ArgumentException($"{this}: size must be finite and > 0 on every axis, got {value}.", nameof(size));
-                ThrowIfStepping(nameof(size));
-                _size = value;
-                Rebuild();
+                SetShapeField(ref _size, value, nameof(size));
             }
         }
 

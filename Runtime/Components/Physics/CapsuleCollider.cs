@@ -19,26 +19,14 @@ namespace Fulcrum.Components
         public float radius
         {
             get => _radius;
-            set
-            {
-                FieldCheck.Size(value, this, nameof(radius));
-                ThrowIfStepping(nameof(radius));
-                _radius = value;
-                Rebuild();
-            }
+            set => SetSize(ref _radius, value, nameof(radius));
         }
 
         /// <summary>Full height including the caps, metres, &gt; 0. Default: 2.</summary>
         public float height
         {
             get => _height;
-            set
-            {
-                FieldCheck.Size(value, this, nameof(height));
-                ThrowIfStepping(nameof(height));
-                _height = value;
-                Rebuild();
-            }
+            set => SetSize(ref _height, value, nameof(height));
         }
 
         /// <summary>The local axis of the capsule: 0 = x, 1 = y, 2 = z. Default: 1.</summary>
@@ -48,9 +36,7 @@ namespace Fulcrum.Components
             set
             {
                 if ((uint)value > 2) throw new ArgumentException($"{this}: direction must be 0 (x), 1 (y) or 2 (z), got {value}.", nameof(direction));
-                ThrowIfStepping(nameof(direction));
-                _direction = value;
-                Rebuild();
+                SetShapeField(ref _direction, value, nameof(direction));
             }
         }
 

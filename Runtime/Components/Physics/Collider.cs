@@ -60,9 +60,7 @@ namespace Fulcrum.Components
             set
             {
                 FieldCheck.Finite(value, this, "center");
-                ThrowIfStepping(nameof(center));
-                _center = value;
-                Rebuild();
+                SetShapeField(ref _center, value, nameof(center));
             }
         }
 
@@ -125,6 +123,26 @@ namespace Fulcrum.Components
         }
 
         internal void OnLayerChanged() => Rebuild();
+
+        /// <summary>
+        /// The tail of every geometry setter (size, radius, height, axis, centre): refuses the
+        /// change while the world steps, stores <paramref name="value"/> and replaces the live
+        /// shape. The caller validates the value first, so a bad value is reported as such even
+        /// mid-step.
+        /// </summary>
+        internal void SetShapeField<T>(ref T field, T value, string member)
+        {
+            ThrowIfStepping(member);
+            field = value;
+            Rebuild();
+        }
+
+        /// <summary>A size setter (radius, height): checked against <see cref="Limits"/>' shape sizes, then <see cref="SetShapeField{T}"/>.</summary>
+        internal void SetSize(ref float field, float value, string member)
+        {
+            FieldCheck.Size(value, this, member);
+            SetShapeField(ref field, value, member);
+        }
 
         // Geometry or settings changed: a live shape is replaced (validated before the old one goes).
         internal void Rebuild()

@@ -11,13 +11,7 @@ namespace Fulcrum.Components
         public float radius
         {
             get => _radius;
-            set
-            {
-                FieldCheck.Size(value, this, nameof(radius));
-                ThrowIfStepping(nameof(radius));
-                _radius = value;
-                Rebuild();
-            }
+            set => SetSize(ref _radius, value, nameof(radius));
         }
 
         internal override ShapeGeometry BuildGeometry() => ShapeGeometry.Sphere(_radius);
