@@ -15,14 +15,14 @@ namespace Fulcrum.Components
         public float coneAngle
         {
             get => _cone;
-            set { Check(value, nameof(coneAngle)); ThrowIfStepping(nameof(coneAngle)); _cone = value; Rebuild(); }
+            set { Check(value, nameof(coneAngle)); SetJointField(ref _cone, value, nameof(coneAngle)); }
         }
 
         /// <summary>Twist limit either way about the axis, degrees in [0, 180]. Default: 45.</summary>
         public float twistAngle
         {
             get => _twist;
-            set { Check(value, nameof(twistAngle)); ThrowIfStepping(nameof(twistAngle)); _twist = value; Rebuild(); }
+            set { Check(value, nameof(twistAngle)); SetJointField(ref _twist, value, nameof(twistAngle)); }
         }
 
         internal override void Configure(ref JointDef def)

@@ -18,28 +18,28 @@ namespace Fulcrum.Components
         public float minDistance
         {
             get => _min;
-            set { Check(value, nameof(minDistance)); ThrowIfStepping(nameof(minDistance)); _min = value; Rebuild(); }
+            set { Check(value, nameof(minDistance)); SetJointField(ref _min, value, nameof(minDistance)); }
         }
 
         /// <summary>Longest distance, metres (infinity allowed); negative = the distance at build time (none with a spring). Default: -1.</summary>
         public float maxDistance
         {
             get => _max;
-            set { if (!float.IsPositiveInfinity(value)) Check(value, nameof(maxDistance)); ThrowIfStepping(nameof(maxDistance)); _max = value; Rebuild(); }
+            set { if (!float.IsPositiveInfinity(value)) Check(value, nameof(maxDistance)); SetJointField(ref _max, value, nameof(maxDistance)); }
         }
 
         /// <summary>Spring frequency toward the build-time distance, Hz (0 = rigid limits only). Default: 0.</summary>
         public float spring
         {
             get => _spring;
-            set { FieldCheck.NonNegative(value, this, nameof(spring)); ThrowIfStepping(nameof(spring)); _spring = value; Rebuild(); }
+            set { FieldCheck.NonNegative(value, this, nameof(spring)); SetJointField(ref _spring, value, nameof(spring)); }
         }
 
         /// <summary>Spring damping ratio (1 = critical). Default: 0.</summary>
         public float damper
         {
             get => _damper;
-            set { FieldCheck.NonNegative(value, this, nameof(damper)); ThrowIfStepping(nameof(damper)); _damper = value; Rebuild(); }
+            set { FieldCheck.NonNegative(value, this, nameof(damper)); SetJointField(ref _damper, value, nameof(damper)); }
         }
 
         internal override void Configure(ref JointDef def)

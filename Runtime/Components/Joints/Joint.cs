@@ -56,7 +56,7 @@ namespace Fulcrum.Components
         public Vector3 anchor
         {
             get => _anchor;
-            set { FieldCheck.Finite(value, this, nameof(anchor)); ThrowIfStepping(nameof(anchor)); _anchor = value; Rebuild(); }
+            set { FieldCheck.Finite(value, this, nameof(anchor)); SetJointField(ref _anchor, value, nameof(anchor)); }
         }
 
         /// <summary>The joint point in the connected body's frame (a world point without one), metres.</summary>
@@ -70,7 +70,7 @@ namespace Fulcrum.Components
         public bool autoConfigureConnectedAnchor
         {
             get => _autoConfigure;
-            set { ThrowIfStepping(nameof(autoConfigureConnectedAnchor)); _autoConfigure = value; Rebuild(); }
+            set => SetJointField(ref _autoConfigure, value, nameof(autoConfigureConnectedAnchor));
         }
 
         /// <summary>The joint axis in this entity's frame (hinge axis, twist axis). Default: +x.</summary>
@@ -93,9 +93,7 @@ namespace Fulcrum.Components
             get => _breakForce;
             set
             {
-                FieldCheck.BreakLimit(value, this, nameof(breakForce));
-                ThrowIfStepping(nameof(breakForce));
-                _breakForce = value;
+                SetBreakLimit(ref _breakForce, value, nameof(breakForce));
                 if (!_joint.IsNone) scene.world.Joints.Data[_joint.Index].BreakForce = value;
             }
         }
@@ -106,9 +104,7 @@ namespace Fulcrum.Components
             get => _breakTorque;
             set
             {
-                FieldCheck.BreakLimit(value, this, nameof(breakTorque));
-                ThrowIfStepping(nameof(breakTorque));
-                _breakTorque = value;
+                SetBreakLimit(ref _breakTorque, value, nameof(breakTorque));
                 if (!_joint.IsNone) scene.world.Joints.Data[_joint.Index].BreakTorque = value;
             }
         }
@@ -117,7 +113,7 @@ namespace Fulcrum.Components
         public bool enableCollision
         {
             get => _enableCollision;
-            set { ThrowIfStepping(nameof(enableCollision)); _enableCollision = value; Rebuild(); }
+            set => SetJointField(ref _enableCollision, value, nameof(enableCollision));
         }
 
         /// <summary>The force the joint applied to this body in the last step, world, N.</summary>
@@ -203,6 +199,28 @@ namespace Fulcrum.Components
             if (!_joint.IsNone && scene.world.IsValid(_joint)) scene.world.DestroyJoint(_joint);
             _joint = default;
             _own = null;
+        }
+
+        // The head of the breakForce and breakTorque setters: check, refuse mid-step, store; the
+        // caller then writes the value into the live joint.
+        void SetBreakLimit(ref float field, float value, string member)
+        {
+            FieldCheck.BreakLimit(value, this, member);
+            ThrowIfStepping(member);
+            field = value;
+        }
+
+        /// <summary>
+        /// The tail of every setter whose value the built joint bakes in (anchors, limits,
+        /// springs): refuses the change while the world steps, stores <paramref name="value"/>
+        /// and rebuilds the live joint. The caller validates the value first, so a bad value is
+        /// reported as such even mid-step.
+        /// </summary>
+        internal void SetJointField<T>(ref T field, T value, string member)
+        {
+            ThrowIfStepping(member);
+            field = value;
+            Rebuild();
         }
 
         /// <summary>Rebuilds a built joint after a structural change (the current pose becomes the rest pose).</summary>
