@@ -116,9 +116,7 @@ namespace Fulcrum.Components
             get => _linearDamping;
             set
             {
-                FieldCheck.NonNegative(value, this, nameof(linearDamping));
-                ThrowIfStepping(nameof(linearDamping));
-                _linearDamping = value;
+                SetNonNegative(ref _linearDamping, value, nameof(linearDamping));
                 if (HasBody) World.GetBody(_body).LinearDamping = value;
             }
         }
@@ -129,9 +127,7 @@ namespace Fulcrum.Components
             get => _angularDamping;
             set
             {
-                FieldCheck.NonNegative(value, this, nameof(angularDamping));
-                ThrowIfStepping(nameof(angularDamping));
-                _angularDamping = value;
+                SetNonNegative(ref _angularDamping, value, nameof(angularDamping));
                 if (HasBody) World.GetBody(_body).AngularDamping = value;
             }
         }

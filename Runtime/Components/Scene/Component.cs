@@ -54,6 +54,18 @@ namespace Fulcrum.Components
                 throw new InvalidOperationException($"{this}: {member} cannot be changed while the world steps (from a callback inside World.Step); do it in FixedUpdate or in a collision message, which run after the step.");
         }
 
+        /// <summary>
+        /// The head of a setter for a finite, non-negative setting (damping, friction): checks
+        /// <paramref name="value"/> (naming <paramref name="member"/>), refuses the change while
+        /// the world steps, and stores it; the caller then hands it to the live object.
+        /// </summary>
+        internal void SetNonNegative(ref float field, float value, string member)
+        {
+            FieldCheck.NonNegative(value, this, member);
+            ThrowIfStepping(member);
+            field = value;
+        }
+
         /// <summary>True when the entity is active in the hierarchy and the component not destroyed.</summary>
         internal bool IsLive => _entity != null && !isDestroyed && _entity.activeInHierarchy;
 

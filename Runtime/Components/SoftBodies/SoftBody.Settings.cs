@@ -64,9 +64,7 @@ namespace Fulcrum.Components
             get => _dampingTime;
             set
             {
-                FieldCheck.NonNegative(value, this, nameof(dampingTime));
-                ThrowIfStepping(nameof(dampingTime));
-                _dampingTime = value;
+                SetNonNegative(ref _dampingTime, value, nameof(dampingTime));
                 SoftBodies.SoftBody? b = body;
                 if (b != null) b.DampingTime = value;
             }

@@ -46,9 +46,7 @@ namespace Fulcrum.Components
             get => _friction;
             set
             {
-                FieldCheck.NonNegative(value, this, nameof(friction));
-                ThrowIfStepping(nameof(friction));
-                _friction = value;
+                SetNonNegative(ref _friction, value, nameof(friction));
                 if (!_handle.IsNone) body!.Friction = value;
             }
         }
