@@ -206,17 +206,8 @@ namespace Fulcrum
         /// Dynamic bodies only; on static and kinematic bodies it does nothing, as in Unity.
         /// Wakes the body.
         /// </summary>
-        public void AddForce(BodyHandle body, Vector3 force, ForceMode mode = ForceMode.Force)
-        {
-            int i = Slot(body);
-            Limits.CheckForce(force, nameof(force));
-            ThrowIfInStep();
-            if (Bodies.Type[i] != BodyType.Dynamic) return;
-            BodyPush push = LinearPush(i, force, mode);
-            push.Check(nameof(force));
-            push.Apply(i);
-            Wake(i);
-        }
+        public void AddForce(BodyHandle body, Vector3 force, ForceMode mode = ForceMode.Force) =>
+            PushAtCentre(body, force, mode, angular: false, nameof(force));
 
         /// <summary>
         /// Applies a force at a world point: the force at the centre of mass plus the torque
@@ -240,14 +231,19 @@ namespace Fulcrum
         }
 
         /// <summary>Applies a torque (or angular acceleration, impulse, velocity change) in world axes. Dynamic bodies only. Wakes the body.</summary>
-        public void AddTorque(BodyHandle body, Vector3 torque, ForceMode mode = ForceMode.Force)
+        public void AddTorque(BodyHandle body, Vector3 torque, ForceMode mode = ForceMode.Force) =>
+            PushAtCentre(body, torque, mode, angular: true, nameof(torque));
+
+        // AddForce and AddTorque: the same checks and order (handle, size, not inside a step; a
+        // non-dynamic body ignores it), one push, linear or angular, checked before it lands.
+        void PushAtCentre(BodyHandle body, Vector3 value, ForceMode mode, bool angular, string name)
         {
             int i = Slot(body);
-            Limits.CheckForce(torque, nameof(torque));
+            Limits.CheckForce(value, name);
             ThrowIfInStep();
             if (Bodies.Type[i] != BodyType.Dynamic) return;
-            BodyPush push = AngularPush(i, torque, mode);
-            push.Check(nameof(torque));
+            BodyPush push = angular ? AngularPush(i, value, mode) : LinearPush(i, value, mode);
+            push.Check(name);
             push.Apply(i);
             Wake(i);
         }
