@@ -24,13 +24,13 @@ namespace Fulcrum.Scenes
                 .Add("type", SceneNames.Of(doc.Solver.Type))
                 .Add("iterations", doc.Solver.Iterations)
                 .Add("substeps", doc.Solver.Substeps);
-            if (doc.Solver.ContactHertz is float contactHertz) solver.Add("contactHertz", contactHertz);
-            if (doc.Solver.JointHertz is float jointHertz) solver.Add("jointHertz", jointHertz);
-            if (doc.Solver.ManifoldReuse is float reuse) solver.Add("manifoldReuse", reuse);
-            if (doc.Solver.ShockPropagation is bool shock) solver.Add("shockPropagation", shock);
-            if (doc.Solver.ShockDepth is float shockDepth) solver.Add("shockDepth", shockDepth);
-            if (doc.Solver.JointTrees is bool trees) solver.Add("jointTrees", trees);
-            if (doc.Solver.MaxJointCorrectionSpeed is float jointSpeed) solver.Add("maxJointCorrectionSpeed", jointSpeed);
+            solver.AddIfSet("contactHertz", doc.Solver.ContactHertz);
+            solver.AddIfSet("jointHertz", doc.Solver.JointHertz);
+            solver.AddIfSet("manifoldReuse", doc.Solver.ManifoldReuse);
+            solver.AddIfSet("shockPropagation", doc.Solver.ShockPropagation);
+            solver.AddIfSet("shockDepth", doc.Solver.ShockDepth);
+            solver.AddIfSet("jointTrees", doc.Solver.JointTrees);
+            solver.AddIfSet("maxJointCorrectionSpeed", doc.Solver.MaxJointCorrectionSpeed);
             o.Add("solver", solver.Value);
             if (doc.Materials.Count > 0)
             {
@@ -38,7 +38,7 @@ namespace Fulcrum.Scenes
                 foreach (SceneMaterial m in doc.Materials)
                 {
                     var mo = new Obj().Add("friction", m.Friction).Add("restitution", m.Restitution);
-                    if (m.Density is float density) mo.Add("density", density);
+                    mo.AddIfSet("density", m.Density);
                     materials.Add(m.Name, mo.Value);
                 }
                 o.Add("materials", materials.Value);
@@ -53,14 +53,14 @@ namespace Fulcrum.Scenes
         static JsonValue Body(SceneBody b)
         {
             var o = new Obj().Add("name", b.Name).Add("type", SceneNames.Of(b.Type));
-            if (b.Mass is float mass) o.Add("mass", mass);
-            if (b.Density is float density) o.Add("density", density);
-            if (b.Material != null) o.Add("material", b.Material);
+            o.AddIfSet("mass", b.Mass);
+            o.AddIfSet("density", b.Density);
+            o.AddIfSet("material", b.Material);
             o.Add("shape", b.Shape != null ? Shape(b.Shape) : JsonValue.Null());
             o.Add("position", b.Position);
-            if (!Same(b.Rotation, Quaternion.Identity)) o.Add("rotation", b.Rotation);
-            if (!Same(b.Velocity, Vector3.Zero)) o.Add("velocity", b.Velocity);
-            if (!Same(b.AngularVelocity, Vector3.Zero)) o.Add("angularVelocity", b.AngularVelocity);
+            o.AddUnless("rotation", b.Rotation, Quaternion.Identity);
+            o.AddUnless("velocity", b.Velocity, Vector3.Zero);
+            o.AddUnless("angularVelocity", b.AngularVelocity, Vector3.Zero);
             if (b.Ccd) o.Add("ccd", true);
             if (b.LockAxes != AxisLocks.None)
             {
@@ -98,7 +98,7 @@ namespace Fulcrum.Scenes
                     o.Add("children", ListOf(compound.Children, c =>
                     {
                         var co = new Obj().Add("shape", c.Shape != null ? Shape(c.Shape) : JsonValue.Null()).Add("position", c.Position);
-                        if (!Same(c.Rotation, Quaternion.Identity)) co.Add("rotation", c.Rotation);
+                        co.AddUnless("rotation", c.Rotation, Quaternion.Identity);
                         return co.Value;
                     }));
                     break;
@@ -109,7 +109,7 @@ namespace Fulcrum.Scenes
         static JsonValue Joint(SceneJoint j)
         {
             var o = new Obj().Add("type", SceneNames.Of(j.Type));
-            if (j.Name != null) o.Add("name", j.Name);
+            o.AddIfSet("name", j.Name);
             o.Add("bodyA", j.BodyA != null ? JsonValue.From(j.BodyA) : JsonValue.Null());
             o.Add("bodyB", j.BodyB != null ? JsonValue.From(j.BodyB) : JsonValue.Null());
             o.Add("anchorA", j.AnchorA).Add("anchorB", j.AnchorB);
@@ -117,29 +117,29 @@ namespace Fulcrum.Scenes
             {
                 case SceneHingeJoint h:
                     o.Add("axisA", h.AxisA).Add("axisB", h.AxisB);
-                    if (h.LowerDeg is float lo) o.Add("lowerDeg", lo);
-                    if (h.UpperDeg is float hi) o.Add("upperDeg", hi);
-                    if (!Same(h.MotorSpeed, 0)) o.Add("motorSpeed", h.MotorSpeed);
-                    if (!Same(h.MaxMotorTorque, 0)) o.Add("maxMotorTorque", h.MaxMotorTorque);
+                    o.AddIfSet("lowerDeg", h.LowerDeg);
+                    o.AddIfSet("upperDeg", h.UpperDeg);
+                    o.AddUnless("motorSpeed", h.MotorSpeed, 0);
+                    o.AddUnless("maxMotorTorque", h.MaxMotorTorque, 0);
                     break;
                 case SceneDistanceJoint d:
-                    if (d.MinLength is float min) o.Add("minLength", min);
-                    if (d.MaxLength is float max) o.Add("maxLength", max);
-                    if (!Same(d.StiffnessHz, 0)) o.Add("stiffnessHz", d.StiffnessHz);
-                    if (!Same(d.Damping, 0)) o.Add("damping", d.Damping);
+                    o.AddIfSet("minLength", d.MinLength);
+                    o.AddIfSet("maxLength", d.MaxLength);
+                    o.AddUnless("stiffnessHz", d.StiffnessHz, 0);
+                    o.AddUnless("damping", d.Damping, 0);
                     break;
                 case ScenePrismaticJoint p:
                     o.Add("axisA", p.AxisA);
-                    if (p.Lower is float lower) o.Add("lower", lower);
-                    if (p.Upper is float upper) o.Add("upper", upper);
+                    o.AddIfSet("lower", p.Lower);
+                    o.AddIfSet("upper", p.Upper);
                     break;
                 case SceneConeTwistJoint c:
                     o.Add("axisA", c.AxisA).Add("axisB", c.AxisB).Add("coneDeg", c.ConeDeg).Add("twistDeg", c.TwistDeg);
                     break;
             }
-            if (j.BreakForce is float force) o.Add("breakForce", force);
-            if (j.BreakTorque is float torque) o.Add("breakTorque", torque);
-            if (j.FrictionTorque is float friction) o.Add("frictionTorque", friction);
+            o.AddIfSet("breakForce", j.BreakForce);
+            o.AddIfSet("breakTorque", j.BreakTorque);
+            o.AddIfSet("frictionTorque", j.FrictionTorque);
             return o.Value;
         }
 
@@ -151,21 +151,21 @@ namespace Fulcrum.Scenes
             {
                 SceneSoftMaterial m = s.Material;
                 var mo = new Obj().Add("model", SceneNames.Of(m.Model));
-                if (m.YoungsModulus is float e) mo.Add("youngsModulus", e);
-                if (m.PoissonRatio is float nu) mo.Add("poissonRatio", nu);
-                if (m.Mu is float mu) mo.Add("mu", mu);
-                if (m.Lambda is float lambda) mo.Add("lambda", lambda);
+                mo.AddIfSet("youngsModulus", m.YoungsModulus);
+                mo.AddIfSet("poissonRatio", m.PoissonRatio);
+                mo.AddIfSet("mu", m.Mu);
+                mo.AddIfSet("lambda", m.Lambda);
                 mo.Add("density", m.Density);
                 o.Add("material", mo.Value);
             }
             o.Add("position", s.Position);
-            if (!Same(s.Rotation, Quaternion.Identity)) o.Add("rotation", s.Rotation);
-            if (!Same(s.Velocity, Vector3.Zero)) o.Add("velocity", s.Velocity);
+            o.AddUnless("rotation", s.Rotation, Quaternion.Identity);
+            o.AddUnless("velocity", s.Velocity, Vector3.Zero);
             if (s.Pinned.Count > 0)
                 o.Add("pinned", ListOf(s.Pinned, p =>
                 {
                     var po = new Obj().Add("min", p.Min).Add("max", p.Max);
-                    if (p.To != null) po.Add("to", p.To);
+                    po.AddIfSet("to", p.To);
                     return po.Value;
                 }));
             if (!Same(s.InitialDeformation, Mat3.Identity))
@@ -174,18 +174,18 @@ namespace Fulcrum.Scenes
                 o.Add("initialDeformation", JsonValue.Array(new List<JsonValue> { Vec(f.R0), Vec(f.R1), Vec(f.R2) }));
             }
             if (s.Probes.Count > 0) o.Add("probes", Points(s.Probes));
-            if (s.Substeps is int substeps) o.Add("substeps", substeps);
-            if (s.Iterations is int iterations) o.Add("iterations", iterations);
-            if (s.DampingTime is float dampingTime) o.Add("dampingTime", dampingTime);
-            if (s.Solver != null) o.Add("solver", s.Solver);
-            if (s.LinearDamping is float linearDamping) o.Add("linearDamping", linearDamping);
-            if (s.GravityScale is float gravityScale) o.Add("gravityScale", gravityScale);
-            if (s.Friction is float friction) o.Add("friction", friction);
-            if (s.CollisionRadius is float radius) o.Add("collisionRadius", radius);
-            if (s.CollideWithShapes is bool shapes) o.Add("collideWithShapes", shapes);
-            if (s.CollideWithSoftBodies is bool softBodies) o.Add("collideWithSoftBodies", softBodies);
-            if (s.SelfCollision is bool self) o.Add("selfCollision", self);
-            if (s.Layer is int layer) o.Add("layer", layer);
+            o.AddIfSet("substeps", s.Substeps);
+            o.AddIfSet("iterations", s.Iterations);
+            o.AddIfSet("dampingTime", s.DampingTime);
+            o.AddIfSet("solver", s.Solver);
+            o.AddIfSet("linearDamping", s.LinearDamping);
+            o.AddIfSet("gravityScale", s.GravityScale);
+            o.AddIfSet("friction", s.Friction);
+            o.AddIfSet("collisionRadius", s.CollisionRadius);
+            o.AddIfSet("collideWithShapes", s.CollideWithShapes);
+            o.AddIfSet("collideWithSoftBodies", s.CollideWithSoftBodies);
+            o.AddIfSet("selfCollision", s.SelfCollision);
+            o.AddIfSet("layer", s.Layer);
             if (s.CollidesWith is int[] layers) o.Add("collidesWith", Ints(layers));
             if (s.Plasticity is ScenePlasticity pl)
                 o.Add("plasticity", new Obj().Add("yieldStrain", pl.YieldStrain).Add("flowRate", pl.FlowRate).Add("maxStrain", pl.MaxStrain).Value);
@@ -218,7 +218,7 @@ namespace Fulcrum.Scenes
         static JsonValue Generator(SceneGenerator g)
         {
             var o = new Obj().Add("type", SceneNames.Of(g.Type));
-            if (g.Name != null) o.Add("name", g.Name);
+            o.AddIfSet("name", g.Name);
             switch (g)
             {
                 case SceneTower t: o.Add("count", t.Count); break;
@@ -229,8 +229,8 @@ namespace Fulcrum.Scenes
                 case SceneDominoes d: o.Add("count", d.Count).Add("axis", SceneNames.Of(d.Axis)).Add("tipSpeed", d.TipSpeed); break;
             }
             o.Add("size", g.Size).Add("at", g.At).Add("spacing", g.Spacing);
-            if (g.Mass is float mass) o.Add("mass", mass);
-            if (g.Material != null) o.Add("material", g.Material);
+            o.AddIfSet("mass", g.Mass);
+            o.AddIfSet("material", g.Material);
             return o.Value;
         }
 
@@ -291,6 +291,22 @@ namespace Fulcrum.Scenes
 
             public Obj Add(string key, Quaternion q) =>
                 Add(key, JsonValue.Array(new List<JsonValue> { JsonValue.From(q.X), JsonValue.From(q.Y), JsonValue.From(q.Z), JsonValue.From(q.W) }));
+
+            // Optional fields: written only when present (null means "not in the file").
+            public Obj AddIfSet(string key, float? v) => v is float f ? Add(key, f) : this;
+
+            public Obj AddIfSet(string key, int? v) => v is int i ? Add(key, i) : this;
+
+            public Obj AddIfSet(string key, bool? v) => v is bool b ? Add(key, b) : this;
+
+            public Obj AddIfSet(string key, string? v) => v != null ? Add(key, v) : this;
+
+            // Fields with a default: written only when they differ from it bit for bit (see Same).
+            public Obj AddUnless(string key, float v, float fallback) => Same(v, fallback) ? this : Add(key, v);
+
+            public Obj AddUnless(string key, Vector3 v, Vector3 fallback) => Same(v, fallback) ? this : Add(key, v);
+
+            public Obj AddUnless(string key, Quaternion v, Quaternion fallback) => Same(v, fallback) ? this : Add(key, v);
         }
     }
 }
