@@ -35,6 +35,20 @@ namespace Fulcrum.Scenes
             return null;
         }
 
+        /// <summary>
+        /// A reader for an object whose required <c>type</c> member picks its kind from
+        /// <paramref name="types"/> (shapes, soft meshes, joints, generators), with the kind in
+        /// <paramref name="kind"/>; null (and an error) when <paramref name="v"/> is not an object
+        /// or its type is missing or unknown.
+        /// </summary>
+        public static JsonObjectReader? OpenTyped<T>(JsonValue v, SceneDiagnostics d, string what, (T Value, string Name)[] types, string typeWhat, out T kind)
+            where T : struct, System.Enum
+        {
+            kind = default;
+            JsonObjectReader? r = Open(v, d, what);
+            return r != null && r.Name("type", types, typeWhat, out kind, required: true) ? r : null;
+        }
+
         string PathOf(string key) => JsonPath.Member(_obj.Path, key);
 
         /// <summary>The member, or null when absent or <c>null</c>; reports it when required and missing.</summary>

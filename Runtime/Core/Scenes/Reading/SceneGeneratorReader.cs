@@ -5,9 +5,8 @@ namespace Fulcrum.Scenes
     {
         public static SceneGenerator? Read(JsonValue v, SceneDiagnostics d)
         {
-            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a generator object");
-            if (r == null || !r.Name("type", SceneNames.GeneratorTypes, "generator type", out SceneGeneratorType kind, required: true))
-                return null;
+            JsonObjectReader? r = JsonObjectReader.OpenTyped(v, d, "a generator object", SceneNames.GeneratorTypes, "generator type", out SceneGeneratorType kind);
+            if (r == null) return null;
             SceneGenerator g;
             switch (kind)
             {

@@ -7,9 +7,8 @@ namespace Fulcrum.Scenes
     {
         public static SceneJoint? Read(JsonValue v, SceneDiagnostics d)
         {
-            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a joint object");
-            if (r == null || !r.Name("type", SceneNames.JointKinds, "joint type", out JointKind kind, required: true))
-                return null;
+            JsonObjectReader? r = JsonObjectReader.OpenTyped(v, d, "a joint object", SceneNames.JointKinds, "joint type", out JointKind kind);
+            if (r == null) return null;
             SceneJoint joint;
             switch (kind)
             {

@@ -111,9 +111,8 @@ namespace Fulcrum.Scenes
         /// <summary>Reads a shape object; null (with errors) when its type is missing or unknown.</summary>
         public static SceneShape? ReadShape(JsonValue v, SceneDiagnostics d)
         {
-            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a shape object");
-            if (r == null || !r.Name("type", SceneNames.ShapeTypes, "shape type", out SceneShapeType kind, required: true))
-                return null;
+            JsonObjectReader? r = JsonObjectReader.OpenTyped(v, d, "a shape object", SceneNames.ShapeTypes, "shape type", out SceneShapeType kind);
+            if (r == null) return null;
             SceneShape shape;
             switch (kind)
             {

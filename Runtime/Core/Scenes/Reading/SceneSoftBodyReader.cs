@@ -57,9 +57,8 @@ namespace Fulcrum.Scenes
 
         static SceneSoftMesh? ReadMesh(JsonValue v, SceneDiagnostics d)
         {
-            JsonObjectReader? r = JsonObjectReader.Open(v, d, "a mesh object");
-            if (r == null || !r.Name("type", SceneNames.SoftMeshTypes, "soft mesh type", out SceneSoftMeshType kind, required: true))
-                return null;
+            JsonObjectReader? r = JsonObjectReader.OpenTyped(v, d, "a mesh object", SceneNames.SoftMeshTypes, "soft mesh type", out SceneSoftMeshType kind);
+            if (r == null) return null;
             SceneSoftMesh mesh;
             switch (kind)
             {
