@@ -140,9 +140,7 @@ namespace Fulcrum.Components
                 if (!_sharedInputSet[slot]) continue;
                 _sharedInputSet[slot] = false;
                 if (_wBody[slot].IsNone || _wMode[slot] != DriveMode.Game) continue;
-                _wFrom[slot] = _world.GetBody(_wBody[slot]).Pose;
-                _wTo[slot] = _sharedInput[slot];
-                _wHasTarget[slot] = true;
+                SetTarget(slot, _sharedInput[slot]);
             }
         }
 

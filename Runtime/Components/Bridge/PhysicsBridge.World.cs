@@ -155,10 +155,17 @@ namespace Fulcrum.Components
             {
                 if (_gState[slot] != Live || _gMode[slot] != DriveMode.Game || _gStatic[slot]) continue;
                 if (slot >= _wSlotCount || _wGeneration[slot] != _gSlots.Generation[slot] || _wBody[slot].IsNone) continue;
-                _wFrom[slot] = _world.GetBody(_wBody[slot]).Pose;
-                _wTo[slot] = _gInput[slot];
-                _wHasTarget[slot] = true;
+                SetTarget(slot, _gInput[slot]);
             }
+        }
+
+        // The game's pose becomes the target of the coming steps of a game-driven body, which
+        // StepWorld moves there from where the body is now (TakeInputs, TakeSharedInputs).
+        void SetTarget(int slot, in Pose to)
+        {
+            _wFrom[slot] = _world.GetBody(_wBody[slot]).Pose;
+            _wTo[slot] = to;
+            _wHasTarget[slot] = true;
         }
 
         // One world step: the k-th of n this frame. Game-driven bodies get a kinematic target a
