@@ -180,11 +180,11 @@ namespace Fulcrum
                 throw new ArgumentException($"settings.Gravity must have magnitude at most {Limits.MaxGravity:G} m/s^2 (Limits.MaxGravity), got {Gravity}.", nameof(Gravity));
             if (Solver != SolverType.Pgs && Solver != SolverType.Tgs)
                 throw new ArgumentException($"settings.Solver must be Pgs or Tgs, got {Solver}.", nameof(Solver));
-            if (Iterations < 1 || Iterations > Limits.MaxIterations) throw new ArgumentException($"settings.Iterations must be in 1..{Limits.MaxIterations} (Limits.MaxIterations), got {Iterations}.", nameof(Iterations));
-            if (Substeps < 1 || Substeps > Limits.MaxSubsteps) throw new ArgumentException($"settings.Substeps must be in 1..{Limits.MaxSubsteps} (Limits.MaxSubsteps), got {Substeps}.", nameof(Substeps));
-            if (PositionIterations < 0 || PositionIterations > Limits.MaxIterations) throw new ArgumentException($"settings.PositionIterations must be in 0..{Limits.MaxIterations} (Limits.MaxIterations), got {PositionIterations}.", nameof(PositionIterations));
-            if (RelaxIterations < 0 || RelaxIterations > Limits.MaxIterations) throw new ArgumentException($"settings.RelaxIterations must be in 0..{Limits.MaxIterations} (Limits.MaxIterations), got {RelaxIterations}.", nameof(RelaxIterations));
-            if (Threads < 1 || Threads > Limits.MaxThreads) throw new ArgumentException($"settings.Threads must be in 1..{Limits.MaxThreads} (Limits.MaxThreads), got {Threads}.", nameof(Threads));
+            CheckCount(Iterations, 1, Limits.MaxIterations, nameof(Limits.MaxIterations), nameof(Iterations));
+            CheckCount(Substeps, 1, Limits.MaxSubsteps, nameof(Limits.MaxSubsteps), nameof(Substeps));
+            CheckCount(PositionIterations, 0, Limits.MaxIterations, nameof(Limits.MaxIterations), nameof(PositionIterations));
+            CheckCount(RelaxIterations, 0, Limits.MaxIterations, nameof(Limits.MaxIterations), nameof(RelaxIterations));
+            CheckCount(Threads, 1, Limits.MaxThreads, nameof(Limits.MaxThreads), nameof(Threads));
             Mathematics.Validate.Positive(TimeToSleep, "settings.TimeToSleep");
             Mathematics.Validate.NonNegative(SleepLinearVelocity, "settings.SleepLinearVelocity");
             Mathematics.Validate.NonNegative(SleepAngularVelocity, "settings.SleepAngularVelocity");
@@ -204,6 +204,13 @@ namespace Fulcrum
             Mathematics.Validate.NonNegative(ManifoldReuseAngle, "settings.ManifoldReuseAngle");
             if (ManifoldReuseAngle > MathF.PI)
                 throw new ArgumentException($"settings.ManifoldReuseAngle must be at most pi, got {ManifoldReuseAngle}.", nameof(ManifoldReuseAngle));
+        }
+
+        // Iterations, substeps, threads: a count in [min, max], max being the Limits constant named <limit>.
+        static void CheckCount(int value, int min, int max, string limit, string field)
+        {
+            if (value < min || value > max)
+                throw new ArgumentException($"settings.{field} must be in {min}..{max} (Limits.{limit}), got {value}.", field);
         }
     }
 }
