@@ -17,12 +17,7 @@ namespace Fulcrum.Components
         public float maxLinearVelocity
         {
             get => _maxLinearVelocity;
-            set
-            {
-                CheckCap(value, nameof(maxLinearVelocity));
-                ThrowIfStepping(nameof(maxLinearVelocity));
-                _maxLinearVelocity = value;
-            }
+            set => SetCap(ref _maxLinearVelocity, value, nameof(maxLinearVelocity));
         }
 
         /// <summary>
@@ -33,12 +28,7 @@ namespace Fulcrum.Components
         public float maxAngularVelocity
         {
             get => _maxAngularVelocity;
-            set
-            {
-                CheckCap(value, nameof(maxAngularVelocity));
-                ThrowIfStepping(nameof(maxAngularVelocity));
-                _maxAngularVelocity = value;
-            }
+            set => SetCap(ref _maxAngularVelocity, value, nameof(maxAngularVelocity));
         }
 
         /// <summary>
@@ -75,10 +65,14 @@ namespace Fulcrum.Components
             return s > max * max ? v * (max / MathF.Sqrt(s)) : v;
         }
 
-        void CheckCap(float value, string field)
+        // The setter of either cap: a cap is > 0 (infinity for none); refused mid-step, then
+        // stored (ClampSpeeds reads it at the next step).
+        void SetCap(ref float cap, float value, string field)
         {
             if (!(value > 0) || float.IsNaN(value))
                 throw new ArgumentException($"{this}: {field} must be > 0 (infinity for no cap), got {value}.", field);
+            ThrowIfStepping(field);
+            cap = value;
         }
     }
 }
