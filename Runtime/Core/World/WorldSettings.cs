@@ -72,10 +72,12 @@ namespace Fulcrum
         /// <summary>Damping ratio of the soft contact constraint (1 = critical). Default: 10.</summary>
         public float ContactDampingRatio;
         /// <summary>
-        /// Shock propagation (TGS): after the biased passes of each substep, one sweep from the
-        /// ground up removes each body's approach to the body it rests on, that body held still
-        /// (ShockPropagation; Documentation~/MassRatio.md). It carries the ground's support up a
-        /// stack whatever the mass ratio; it only removes approach, so it never adds energy.
+        /// Shock propagation: after the biased passes of each TGS substep (after PGS's velocity
+        /// passes), one sweep from the ground up removes each body's approach to the body it rests
+        /// on, that body held still, wherever it would carry their contact past
+        /// <see cref="ShockDepth"/> (ShockPropagation; Documentation~/MassRatio.md). It carries the
+        /// ground's support up a stack whatever the mass ratio and whatever the shapes; it only
+        /// removes approach, so it never adds energy.
         /// Default: true.
         /// </summary>
         public bool ShockPropagation;

@@ -31,7 +31,7 @@ namespace Fulcrum.Scenes
         public float? ManifoldReuse { get; set; }
 
         /// <summary>
-        /// <c>shockPropagation</c>: the TGS sweep that stops heavy loads sinking into light bodies
+        /// <c>shockPropagation</c>: the sweep (TGS and PGS) that stops heavy loads sinking into light bodies
         /// (<see cref="WorldSettings.ShockPropagation"/>; an extension). Null: the default (on).
         /// </summary>
         public bool? ShockPropagation { get; set; }
