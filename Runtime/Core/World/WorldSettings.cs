@@ -91,7 +91,8 @@ namespace Fulcrum
         /// <summary>
         /// Joint trees (TGS, and PGS's velocity passes): the anchor rows of ball, hinge, fixed and
         /// cone-twist joints that form trees (with the rotation rows of welds and hinges, rigid
-        /// distance joints' length rows and prismatic joints' cross rows and lock) are
+        /// distance joints' length rows, prismatic joints' cross rows and lock, and the limits a
+        /// hinge, a slider or a heavy-laden cone-twist joint rests on) are
         /// solved exactly, as one block per
         /// iteration (Baraff's linear-time solve; JointTreeSolver), so a heavy load on light links
         /// does not stretch them: a Gauss-Seidel row is a spring on the light side's effective

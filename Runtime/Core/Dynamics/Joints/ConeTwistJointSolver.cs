@@ -81,11 +81,17 @@ namespace Fulcrum.Dynamics
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
             JointSolver.SolveFriction(j.FrictionTorque, ref k.FrictionImpulse, ref a, ref b, Vector3.Zero, p.H);
-            if (_cone) k.Cone.SolveLimit(ref a, ref b, j.ConeAngle - _swing, p.Joint, p.InvH, useBias);
+            // The limits the joint tree's block holds this step are its, and a limit still ahead is
+            // left to the block where the block takes the joint's limits (JointTreeSolver.RestingCone;
+            // bits of DirectLimit: 1 the cone, 2 the lower twist limit, 4 the upper, 8 the block takes
+            // them), as a tree hinge leaves its stop: solved here, between the warm start and the
+            // block, a limit met a light arm's transient velocities under a 1e5 kg load and the arm tore loose.
+            bool tree = (j.DirectLimit & 8) != 0;
+            if (_cone && (j.DirectLimit & 1) == 0 && !(tree && _swing < j.ConeAngle)) k.Cone.SolveLimit(ref a, ref b, j.ConeAngle - _swing, p.Joint, p.InvH, useBias);
             if (_limits)
             {
-                k.LowerLimit.SolveLimit(ref a, ref b, _twist + j.TwistAngle, p.Joint, p.InvH, useBias);
-                k.UpperLimit.SolveLimit(ref a, ref b, j.TwistAngle - _twist, p.Joint, p.InvH, useBias);
+                if ((j.DirectLimit & 2) == 0 && !(tree && _twist > -j.TwistAngle)) k.LowerLimit.SolveLimit(ref a, ref b, _twist + j.TwistAngle, p.Joint, p.InvH, useBias);
+                if ((j.DirectLimit & 4) == 0 && !(tree && _twist < j.TwistAngle)) k.UpperLimit.SolveLimit(ref a, ref b, j.TwistAngle - _twist, p.Joint, p.InvH, useBias);
             }
             if (!j.DirectPoint) k.Point.Solve(ref a, ref b, g.ArmA, g.ArmB, g.Gap, p.Joint, useBias);
         }

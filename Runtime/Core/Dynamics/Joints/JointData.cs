@@ -63,8 +63,11 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public bool DirectRotation;
         /// <summary>
-        /// A hinge's limit row solved by <see cref="JointTreeSolver"/> this step: +1 the lower limit
-        /// it rests on or closes on, -1 the upper, 0 none (set with <see cref="DirectRotation"/>).
+        /// A hinge's or slider's limit row solved by <see cref="JointTreeSolver"/> this step: +1 the
+        /// lower limit it rests on or closes on, -1 the upper, 0 none (set with
+        /// <see cref="DirectRotation"/>, or with <see cref="DirectPoint"/> for a slider). A cone-twist
+        /// joint's bits: 1 its cone, 2 its lower twist limit, 4 its upper, 8 the block takes its
+        /// limits as it meets them (set with <see cref="DirectPoint"/>, where the tree carries a heavy load).
         /// </summary>
         public sbyte DirectLimit;
 

@@ -37,9 +37,10 @@ namespace Fulcrum.Dynamics
     /// and a prismatic joint as its two rows across the slide axis and its rotation lock. A joint
     /// further apart than its capped bias closes at full rate keeps its rows
     /// (it is being pulled in). A hinge on or closing on an angle limit brings that row too (see
-    /// RestingLimit), and a slider on or closing on a slide limit that row (see RestingSlide).
-    /// The rest (a loop's closing joint, a bridge's second anchor, a hinge's stop being left fast,
-    /// motors, cone and twist limits, friction, springs) stay in the Gauss-Seidel
+    /// RestingLimit), a slider on or closing on a slide limit that row (see RestingSlide), and a
+    /// cone-twist joint whose tree carries a heavy load its cone and twist limits (see RestingCone
+    /// and GateLimits). The rest (a loop's closing joint, a bridge's second anchor, a hinge's stop
+    /// being left fast, motors, lightly laden cone-twist limits, friction, springs) stay in the Gauss-Seidel
     /// passes, and the block is one more item of those passes (block Gauss-Seidel): solved after
     /// the last biased sweep of a TGS substep and after its relax sweep (after every sweep it cost
     /// ragdolls 40 % more, every test passing either way), and after every PGS velocity sweep (only after
@@ -89,9 +90,13 @@ namespace Fulcrum.Dynamics
         bool[] _free = new bool[16];
         // Per distance node: which ends' turning its tilt rows hold (bit 0: A, rows 3-4; bit 1: B, rows 5-6; see Tilt).
         byte[] _tilt = new byte[16];
+        // Per cone-twist node: its one-sided rows released for this factorisation (bit 0: the cone, row 3; bit 1: the twist limit, row 4).
+        byte[] _released = new byte[16];
         // Factor: D^-1 (Stride x Stride per node), H_ip (the block to the parent, rows of i, Stride x Stride room) and L = D^-1 H_ip.
         double[] _dinv = new double[16 * Block], _h = new double[16 * Block], _l = new double[16 * Block];
         double[] _x = new double[16 * Stride];
+        // Per body node, the impulses of one Apply summed: linear, then angular about the centre.
+        double[] _sum = new double[16 * 6];
         readonly double[] _scratch = new double[Stride];
         // Build: union-find over solver bodies, per-body node and adjacency.
         int[] _find = new int[16], _bodyNode = new int[16], _first = new int[16], _next = new int[32], _stack = new int[16];
@@ -180,6 +185,8 @@ namespace Fulcrum.Dynamics
                 }
                 else if (slider)
                     j.DirectLimit = RestingSlide(j, soft, bodies[a].PointVelocity(j.ArmA + gap), bodies[b].PointVelocity(j.ArmB), gap, dt);
+                else if (j.Kind == JointKind.ConeTwist)
+                    j.DirectLimit = (sbyte)(TreeLimits | RestingCone(j, soft, bodies[a].AngularVelocity, bodies[b].AngularVelocity, dt));
                 _direct[_directCount++] = slot;
             }
             if (_directCount > 0) Arrange(bodies, data);
@@ -239,6 +246,81 @@ namespace Fulcrum.Dynamics
 
         /// <summary>How close to a slide limit a prismatic joint counts as resting on it, m: 0.005.</summary>
         const float SlideReach = 0.005f;
+
+        /// <summary>
+        /// Which limits of a cone-twist joint the block takes this step (bits: <see cref="ConeRow"/>,
+        /// <see cref="TwistLowerRow"/>, <see cref="TwistUpperRow"/>): each one the joint rests on or
+        /// closes on, as a slider's limit (<see cref="RestingSlide"/>): within <see cref="LimitReach"/>
+        /// of it or closing fast enough to reach it within the step, and not past it by more than
+        /// the capped bias closes; also while it is being left (the block releases a row that
+        /// would pull; a spin test as the hinge's let a 1 kg arm's momentary spin under 1e5 kg,
+        /// cone and twist both held, drop the twist row, and the arm tore loose). Their rows (about
+        /// the swing axis and the mean twist axis, as ConeTwistJointSolver's) join the block, scaled
+        /// as the anchor rows, speculative while ahead, pushing only. Row by row each was a spring on
+        /// the light arm: a 1000 kg load on a 1 kg arm resting on a 30 degree cone swung through it
+        /// to 170 degrees, a twist limit of 10 degrees let it turn to 144, and under 1e5 kg the
+        /// anchor gave way (the load fell 73 m).
+        /// </summary>
+        static sbyte RestingCone(in JointData j, in Softness soft, Vector3 wA, Vector3 wB, float dt)
+        {
+            int rows = 0;
+            if (j.ConeAngle < MathF.PI)
+            {
+                ConeSwing(j.FrameA, j.FrameB, out Vector3 axis, out float swing);
+                float rate = Vector3.Dot(axis, wB - wA);
+                if (j.ConeAngle - swing <= LimitReach + MathF.Max(0, rate) * dt
+                    && soft.BiasRate * (swing - j.ConeAngle) <= soft.MaxBias) rows |= ConeRow;
+            }
+            // The twist limits about the mean twist axis, as the hinge's stops about its axis; not
+            // near a half-turn swing, where that axis (the frames' x axes summed) vanishes and
+            // turns over: a 1e5 kg pendulum on a 1 kg link swinging through it tore loose.
+            Vector3 sum = Vector3.Transform(Vector3.UnitX, j.FrameA) + Vector3.Transform(Vector3.UnitX, j.FrameB);
+            if (j.TwistAngle < MathF.PI && sum.LengthSquared() > TwistAxisFloor)
+            {
+                Vector3 t = TwistAxis(j.FrameA, j.FrameB);
+                float spin = Vector3.Dot(t, wB - wA), twist = JointSolver.TwistAngle(j.FrameA, j.FrameB);
+                if (twist + j.TwistAngle <= LimitReach + MathF.Max(0, -spin) * dt
+                    && soft.BiasRate * (-j.TwistAngle - twist) <= soft.MaxBias) rows |= TwistLowerRow;
+                else if (j.TwistAngle - twist <= LimitReach + MathF.Max(0, spin) * dt
+                    && soft.BiasRate * (twist - j.TwistAngle) <= soft.MaxBias) rows |= TwistUpperRow;
+            }
+            return (sbyte)rows;
+        }
+
+        /// <summary>
+        /// The least squared length of the frames' x axes summed (4 cos^2(swing / 2)) at which a
+        /// twist limit joins the block: 1, a swing of 120 degrees.
+        /// </summary>
+        const float TwistAxisFloor = 1f;
+
+        /// <summary>
+        /// Bits of a cone-twist joint's <see cref="JointData.DirectLimit"/>: the block holds its cone,
+        /// its lower or its upper twist limit this step; TreeLimits: the block takes its limits as
+        /// it meets them (the joint leaves a limit still ahead to the block, as a tree hinge its stop).
+        /// </summary>
+        const int ConeRow = 1, TwistLowerRow = 2, TwistUpperRow = 4, TreeLimits = 8;
+
+        /// <summary>A cone-twist joint's twist axis (as ConeTwistJointSolver's): the mean of the frames' x axes.</summary>
+        static Vector3 TwistAxis(Quaternion fA, Quaternion fB)
+        {
+            Vector3 ta = Vector3.Transform(Vector3.UnitX, fA);
+            Vector3 t = ta + Vector3.Transform(Vector3.UnitX, fB);
+            float length = t.Length();
+            return length > 1e-6f ? t / length : ta;
+        }
+
+        /// <summary>
+        /// A cone-twist joint's swing (as ConeTwistJointSolver measures it): the angle between the
+        /// frames' x axes, and the unit axis about which it grows (A's y axis when they are aligned).
+        /// </summary>
+        static void ConeSwing(Quaternion fA, Quaternion fB, out Vector3 axis, out float swing)
+        {
+            Vector3 ta = Vector3.Transform(Vector3.UnitX, fA), tb = Vector3.Transform(Vector3.UnitX, fB);
+            Vector3 s = Vector3.Cross(ta, tb);
+            float sin = s.Length();
+            swing = MathF.Atan2(sin, Vector3.Dot(ta, tb));
+            axis = sin > 1e-6f ? s / sin : Vector3.Transform(Vector3.UnitY, fA);
+        }
 
         /// <summary>
         /// A rope (a distance joint with min &lt; max) joins the block while it is pulled taut: its
@@ -307,6 +389,7 @@ namespace Fulcrum.Dynamics
                 _leaf = new bool[capacity];
                 _free = new bool[capacity];
                 _tilt = new byte[capacity];
+                _released = new byte[capacity];
             }
             if (_dinv.Length < Block * capacity)
             {
@@ -322,14 +405,19 @@ namespace Fulcrum.Dynamics
                 int jn = n++;
                 _body[jn] = -1;
                 _joint[jn] = _direct[k];
-                _rows[jn] = j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic || j.DirectRotation ? j.Kind : JointKind.Ball;
+                bool cone = j.Kind == JointKind.ConeTwist && (j.DirectLimit & (ConeRow | TwistLowerRow | TwistUpperRow)) != 0;
+                _rows[jn] = j.Kind == JointKind.Distance || j.Kind == JointKind.Prismatic || j.DirectRotation || cone ? j.Kind : JointKind.Ball;
                 _dim[jn] = j.Kind == JointKind.Distance ? 3 : j.Kind == JointKind.Prismatic ? (j.DirectLimit != 0 ? 6 : 5)
-                    : j.DirectRotation ? (j.Kind == JointKind.Fixed || j.DirectLimit != 0 ? 6 : 5) : 3;
+                    : j.DirectRotation ? (j.Kind == JointKind.Fixed || j.DirectLimit != 0 ? 6 : 5) : cone ? 5 : 3;
                 _nodeA[jn] = BodyNode(bodies, j.SolverA, ref n);
                 _nodeB[jn] = BodyNode(bodies, j.SolverB, ref n);
             }
             _nodes = n;
-            for (int i = 0; i < n; i++) _free[i] = false;
+            for (int i = 0; i < n; i++)
+            {
+                _free[i] = false;
+                _released[i] = 0;
+            }
             // Adjacency of body nodes: a linked list of (joint node) edges per body node.
             for (int i = 0; i < n; i++) _parent[i] = -2;
             for (int i = 0; i < n; i++) _first[i] = -1;
@@ -347,7 +435,9 @@ namespace Fulcrum.Dynamics
                     if (_parent[i] != -2) continue;
                     bool anchoredJoint = _joint[i] >= 0 && (_nodeA[i] < 0 || _nodeB[i] < 0);
                     if (pass == 0 ? !anchoredJoint : _joint[i] >= 0) continue;
+                    int first = visited;
                     visited = Walk(i, visited);
+                    GateLimits(bodies, data, first, visited);
                 }
             // Reverse pre-order.
             for (int i = 0; i < visited / 2; i++) (_order[i], _order[visited - 1 - i]) = (_order[visited - 1 - i], _order[i]);
@@ -356,6 +446,43 @@ namespace Fulcrum.Dynamics
             for (int i = 0; i < n; i++)
                 if (_parent[i] >= 0) _leaf[_parent[i]] = false;
             _stale = true;
+        }
+
+        /// <summary>
+        /// How much heavier than the lighter body of a cone-twist joint the heaviest body of its
+        /// tree must be for the block to take the joint's cone and twist limits: 30.
+        /// </summary>
+        const float LimitMassRatio = 30f;
+
+        // The cone and twist limits of the tree whose nodes are _order[first .. end) stay in the
+        // block only where the tree carries a load far heavier than the joint's lighter body: row
+        // by row a limit is a spring on that body's own inertia, so a 1 kg arm under 1000 kg went
+        // through its cone, while between bodies of like mass (ragdolls: 2-35 kg) the rows hold,
+        // and in the block they kept a ragdoll pile from settling (awake after 15 s, where row by
+        // row it sleeps within 3.1 s): the limits the block takes are not held by joint friction
+        // in the same pass.
+        void GateLimits(SolverBody[] bodies, JointData[] data, int first, int end)
+        {
+            float heaviest = 0;
+            for (int k = first; k < end; k++)
+            {
+                int node = _order[k];
+                if (_joint[node] < 0) heaviest = MathF.Max(heaviest, 1f / bodies[_body[node]].InverseMass);
+            }
+            for (int k = first; k < end; k++)
+            {
+                int node = _order[k];
+                if (_joint[node] < 0) continue;
+                ref JointData j = ref data[_joint[node]];
+                if (j.Kind != JointKind.ConeTwist) continue;
+                float lighter = float.MaxValue;
+                if (_nodeA[node] >= 0) lighter = 1f / bodies[_body[_nodeA[node]]].InverseMass;
+                if (_nodeB[node] >= 0) lighter = MathF.Min(lighter, 1f / bodies[_body[_nodeB[node]]].InverseMass);
+                if (heaviest >= LimitMassRatio * lighter) continue;
+                j.DirectLimit = 0;
+                _rows[node] = JointKind.Ball;
+                _dim[node] = 3;
+            }
         }
 
         // The node of a dynamic body (made on first use); -1 for a static or kinematic one.
@@ -478,6 +605,26 @@ namespace Fulcrum.Dynamics
                     if (a.IsDynamic != 0) a.ApplyImpulse(_armA[i], p);
                     if (b.IsDynamic != 0) b.ApplyImpulse(_armB[i], -p);
                 }
+                else if (_rows[i] == JointKind.ConeTwist)
+                {
+                    // The cone and the twist limit each on their own (row 3, row 4).
+                    bool released = false;
+                    for (int row = 0; row < 2; row++)
+                    {
+                        if ((_released[i] & (1 << row)) != 0 || !ConeTwistRow(j, row)) continue;
+                        Vector2 s = _scale[Stride * i + 3 + row];
+                        ref AxisConstraintPart limit = ref ConeTwistLimit(ref j, row);
+                        if (limit.Impulse + s.X * (float)x[at + 3 + row] - s.Y * limit.Impulse >= 0f) continue;
+                        Vector3 l = limit.Impulse * _axes[3 * i + row];
+                        limit.Impulse = 0;
+                        if (a.IsDynamic != 0) a.ApplyAngularImpulse(l);
+                        if (b.IsDynamic != 0) b.ApplyAngularImpulse(-l);
+                        _released[i] |= (byte)(1 << row);
+                        released = true;
+                    }
+                    if (released) any = true;
+                    continue;
+                }
                 else if (_rows[i] == JointKind.Distance && j.MinLength != j.MaxLength)
                 {
                     Vector2 s = _scale[Stride * i];
@@ -575,6 +722,22 @@ namespace Fulcrum.Dynamics
                 x[at + 2] = jv.Z;
                 int rows = _dim[i] - 3;
                 if (rows == 0) continue;
+                if (_rows[i] == JointKind.ConeTwist)
+                {
+                    // The cone (row 3) and a twist limit (row 4): speculative while still ahead (each
+                    // stops only what would pass it within the substep), soft and biased on or past
+                    // it; scaled as the anchor rows. A row the joint does not rest on is zero and released.
+                    Vector3 wr = b.AngularVelocity - a.AngularVelocity;
+                    for (int row = 0; row < 2; row++)
+                    {
+                        float limit = row == 0 ? _error[i].X : _error[i].Y, v = Vector3.Dot(_axes[3 * i + row], wr);
+                        if (limit > 0) v += limit / h;
+                        else if (useBias) v += soft.Bias(limit, out _, out _);
+                        _scale[Stride * i + 3 + row] = new Vector2(massScale, impulseScale);
+                        x[at + 3 + row] = v;
+                    }
+                    continue;
+                }
                 // Rotation rows: J v = u . (wB - wA); the bias as the kind's own rows ask it (the
                 // error vector capped as one, so the cap keeps its direction).
                 Vector3 w = b.AngularVelocity - a.AngularVelocity;
@@ -641,6 +804,8 @@ namespace Fulcrum.Dynamics
         void Apply(SolverBody[] bodies, JointData[] data)
         {
             double[] x = _x;
+            if (_sum.Length < 6 * _nodes) _sum = new double[Math.Max(6 * _nodes, 2 * _sum.Length)];
+            Array.Clear(_sum, 0, 6 * _nodes);
             // x holds the rigid impulses -A^-1 (J v + bias). The soft step scales them as a single
             // row's: dLambda = massScale x - impulseScale lambda, so a biased row is a spring on the
             // tree's true effective mass A^-1 (the load's, not the link's). Applied row by row.
@@ -672,16 +837,8 @@ namespace Fulcrum.Dynamics
                     Vector2 s3 = _scale[Stride * i + 2];
                     Vector3 turn = s3.X * new Vector3((float)x[at + 2], (float)x[at + 3], (float)x[at + 4]) - s3.Y * slide.Lock.Impulse;
                     slide.Lock.Impulse += turn;
-                    if (bodies[j.SolverA].IsDynamic != 0)
-                    {
-                        bodies[j.SolverA].ApplyImpulse(_armA[i], -across);
-                        bodies[j.SolverA].ApplyAngularImpulse(-turn);
-                    }
-                    if (bodies[j.SolverB].IsDynamic != 0)
-                    {
-                        bodies[j.SolverB].ApplyImpulse(_armB[i], across);
-                        bodies[j.SolverB].ApplyAngularImpulse(turn);
-                    }
+                    Push(_nodeA[i], _armA[i], -across, -turn);
+                    Push(_nodeB[i], _armB[i], across, turn);
                     continue;
                 }
                 if (_rows[i] == JointKind.Distance)
@@ -701,29 +858,37 @@ namespace Fulcrum.Dynamics
                     Vector3 p = dl * _axes[3 * i] + across * ((float)x[at + 1] * _axes[3 * i + 1] + (float)x[at + 2] * _axes[3 * i + 2]);
                     Vector3 turnA = across * ((float)x[at + 3] * _axes[3 * i + 1] + (float)x[at + 4] * _axes[3 * i + 2]);
                     Vector3 turnB = across * ((float)x[at + 5] * _axes[3 * i + 1] + (float)x[at + 6] * _axes[3 * i + 2]);
-                    if (bodies[j.SolverA].IsDynamic != 0)
-                    {
-                        bodies[j.SolverA].ApplyImpulse(_armA[i], -p);
-                        if ((_tilt[i] & 1) != 0) bodies[j.SolverA].ApplyAngularImpulse(turnA);
-                    }
-                    if (bodies[j.SolverB].IsDynamic != 0)
-                    {
-                        bodies[j.SolverB].ApplyImpulse(_armB[i], p);
-                        if ((_tilt[i] & 2) != 0) bodies[j.SolverB].ApplyAngularImpulse(turnB);
-                    }
+                    Push(_nodeA[i], _armA[i], -p, (_tilt[i] & 1) != 0 ? turnA : Vector3.Zero);
+                    Push(_nodeB[i], _armB[i], p, (_tilt[i] & 2) != 0 ? turnB : Vector3.Zero);
                     continue;
                 }
                 ref PointConstraintPart point = ref Point(ref j);
                 Vector3 impulse = s.X * new Vector3((float)x[at], (float)x[at + 1], (float)x[at + 2]) - s.Y * point.Impulse;
                 point.Impulse += impulse;
-                ref SolverBody a = ref bodies[j.SolverA];
-                ref SolverBody b = ref bodies[j.SolverB];
-                if (a.IsDynamic != 0) a.ApplyImpulse(_armA[i], -impulse);
-                if (b.IsDynamic != 0) b.ApplyImpulse(_armB[i], impulse);
-                if (_dim[i] == 3) continue;
+                if (_dim[i] == 3)
+                {
+                    Push(_nodeA[i], _armA[i], -impulse, Vector3.Zero);
+                    Push(_nodeB[i], _armB[i], impulse, Vector3.Zero);
+                    continue;
+                }
                 Vector3 l;
                 s = _scale[Stride * i + 3];
-                if (_rows[i] == JointKind.Fixed)
+                if (_rows[i] == JointKind.ConeTwist)
+                {
+                    // The cone and the twist limit it rests on: each may only push back within its limit.
+                    l = Vector3.Zero;
+                    for (int row = 0; row < 2; row++)
+                    {
+                        if ((_released[i] & (1 << row)) != 0 || !ConeTwistRow(j, row)) continue;
+                        ref AxisConstraintPart limit = ref ConeTwistLimit(ref j, row);
+                        Vector2 sr = _scale[Stride * i + 3 + row];
+                        float d = sr.X * (float)x[at + 3 + row] - sr.Y * limit.Impulse;
+                        if (limit.Impulse + d < 0f) d = -limit.Impulse;
+                        limit.Impulse += d;
+                        l += d * _axes[3 * i + row];
+                    }
+                }
+                else if (_rows[i] == JointKind.Fixed)
                 {
                     ref RotationLockPart lockPart = ref j.Parts.Fixed.Lock;
                     Vector3 d = s.X * new Vector3((float)x[at + 3], (float)x[at + 4], (float)x[at + 5]) - s.Y * lockPart.Impulse;
@@ -748,9 +913,35 @@ namespace Fulcrum.Dynamics
                         l += d3 * _axes[3 * i + 2];
                     }
                 }
-                if (a.IsDynamic != 0) a.ApplyAngularImpulse(-l);
-                if (b.IsDynamic != 0) b.ApplyAngularImpulse(l);
+                Push(_nodeA[i], _armA[i], -impulse, -l);
+                Push(_nodeB[i], _armB[i], impulse, l);
             }
+            // Each body's velocity changes once, from its impulses summed in double: around a
+            // light body between heavy ones they cancel to a small remainder, which, applied
+            // joint by joint in float, came out at the float spacing of the large terms (a 1 kg arm
+            // under 1e5 kg on a cone and a twist limit took 1 rad/s of noise each step and tore loose).
+            for (int i = 0; i < _nodes; i++)
+            {
+                if (_joint[i] >= 0) continue;
+                int at = 6 * i;
+                ref SolverBody body = ref bodies[_body[i]];
+                body.LinearVelocity += body.InverseMass * new Vector3((float)_sum[at], (float)_sum[at + 1], (float)_sum[at + 2]);
+                body.AngularVelocity += body.InverseInertia * new Vector3((float)_sum[at + 3], (float)_sum[at + 4], (float)_sum[at + 5]);
+            }
+        }
+
+        // Adds an impulse p at arm r and an angular impulse l to body node `node`'s sums (nothing for -1, a static or kinematic body).
+        void Push(int node, Vector3 r, Vector3 p, Vector3 l)
+        {
+            if (node < 0) return;
+            int at = 6 * node;
+            double[] sum = _sum;
+            sum[at] += p.X;
+            sum[at + 1] += p.Y;
+            sum[at + 2] += p.Z;
+            sum[at + 3] += (double)r.Y * p.Z - (double)r.Z * p.Y + l.X;
+            sum[at + 4] += (double)r.Z * p.X - (double)r.X * p.Z + l.Y;
+            sum[at + 5] += (double)r.X * p.Y - (double)r.Y * p.X + l.Z;
         }
 
         int Dim(int node) => _dim[node];
@@ -765,6 +956,17 @@ namespace Fulcrum.Dynamics
                 case JointKind.Fixed: return ref j.Parts.Fixed.Point;
                 default: return ref j.Parts.ConeTwist.Point;
             }
+        }
+
+        // Whether a cone-twist joint's block holds row 3 + row (0: the cone, 1: a twist limit).
+        static bool ConeTwistRow(in JointData j, int row) => (j.DirectLimit & (row == 0 ? ConeRow : TwistLowerRow | TwistUpperRow)) != 0;
+
+        // The limit part behind a cone-twist joint's block row 3 + row.
+        static ref AxisConstraintPart ConeTwistLimit(ref JointData j, int row)
+        {
+            if (row == 0) return ref j.Parts.ConeTwist.Cone;
+            if ((j.DirectLimit & TwistLowerRow) != 0) return ref j.Parts.ConeTwist.LowerLimit;
+            return ref j.Parts.ConeTwist.UpperLimit;
         }
 
         // Block LDL^T in elimination order: D_i = H_ii - sum over children c of H_ci^T D_c^-1 H_ci,
@@ -850,6 +1052,21 @@ namespace Fulcrum.Dynamics
                         _dim[i] = _tilt[i] != 0 ? 7 : 3;
                         if (_free[i]) // slack: no tension, no stiffness
                             for (int row = 0; row < 7; row++) dm[m + At(row, row)] = -Released;
+                    }
+                    else if (_rows[i] == JointKind.ConeTwist)
+                    {
+                        // The cone row, as ConeTwistJointSolver's: J = [0, -s] on B (s the swing
+                        // axis), its error the room left in the cone (negative past it).
+                        ConeSwing(g.FrameA, g.FrameB, out Vector3 swingAxis, out float swing);
+                        // The twist limit, as its rows: +t for the lower (error twist + limit), -t for the upper.
+                        Vector3 t = TwistAxis(g.FrameA, g.FrameB);
+                        float twist = JointSolver.TwistAngle(g.FrameA, g.FrameB);
+                        bool lower = (j.DirectLimit & TwistLowerRow) != 0;
+                        _axes[3 * i] = ConeTwistRow(j, 0) ? -swingAxis : Vector3.Zero;
+                        _axes[3 * i + 1] = !ConeTwistRow(j, 1) ? Vector3.Zero : lower ? t : -t;
+                        _error[i] = new Vector3(j.ConeAngle - swing, lower ? twist + j.TwistAngle : j.TwistAngle - twist, 0);
+                        for (int row = 0; row < 2; row++)
+                            if ((_released[i] & (1 << row)) != 0 || !ConeTwistRow(j, row)) dm[m + At(3 + row, 3 + row)] = -Released;
                     }
                     else if (_rows[i] == JointKind.Fixed)
                     {
@@ -1134,7 +1351,11 @@ namespace Fulcrum.Dynamics
         {
             _stale = true;
             // Each position update starts with every one-sided row (a stop, a rope) held again.
-            for (int i = 0; i < _nodes; i++) _free[i] = false;
+            for (int i = 0; i < _nodes; i++)
+            {
+                _free[i] = false;
+                _released[i] = 0;
+            }
         }
 
         static void Grow(ref int[] a, int n)
