@@ -30,7 +30,14 @@ namespace Fulcrum.Dynamics
             // The sweep after the velocity passes, as TGS runs it after its biased ones: without
             // it the passes see a heavy body through a light one's mass, and a 1 t box pushed a
             // 1 kg box 0.8 m into the ground (the position passes, row by row too, cannot lift it back).
-            if (s.ShockPropagation) context.Shock();
+            if (s.ShockPropagation)
+            {
+                // Twice: the second sweep has no approach left to take, but each body's friction
+                // on the one below it now has the load the first one put on the bodies above it
+                // (TGS carries it from one substep to the next).
+                context.Shock();
+                context.Shock();
+            }
             context.EndGuard(islands);
             context.StoreVelocities();
             // The speed cap holds for what the constraints added too (a contradictory joint loop
