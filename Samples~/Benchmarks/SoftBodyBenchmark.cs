@@ -15,7 +15,8 @@ namespace Fulcrum.Benchmarks
     /// (a few steps each, in turn) so that a change in the machine's load hits both alike; each
     /// row gives the mean, median and p95 of its steps. The last lines check issue 16's bars:
     /// the 10k-tet box at most 5 ms per step on 1 thread, the 50k-tet box at most 16 ms with 2
-    /// threads, and N threads never slower than 1 above 5k elements.
+    /// threads, and N threads never slower than 1 above 5k elements. `--threads=1,2,4,8,16` steps
+    /// each scene on every count given instead of 1 and all cores.
     /// </summary>
     public sealed class SoftBodyBenchmark : IBenchmark
     {
@@ -28,6 +29,8 @@ namespace Fulcrum.Benchmarks
             int warm = quick ? 5 : 30, measured = quick ? 10 : 60;
             const int turn = 5; // steps per world per turn
             int cores = Environment.ProcessorCount;
+            int[]? counts = ThreadCounts(output, out bool bad);
+            if (bad) return;
             output.WriteLine($"{"scene",-28} {"elements",9} {"threads",7} {"substeps",8} {"mean ms",8} {"median ms",10} {"p95 ms",8} {"bytes/step",10}");
             var scenes = new List<(string, Func<int, World>)>
             {
@@ -39,7 +42,7 @@ namespace Fulcrum.Benchmarks
             var bars = new List<string>();
             foreach (var (name, build) in scenes)
             {
-                int[] threadCounts = cores > 1 ? new[] { 1, cores } : new[] { 1 };
+                int[] threadCounts = counts ?? (cores > 1 ? new[] { 1, cores } : new[] { 1 });
                 var worlds = new World[threadCounts.Length];
                 var times = new double[threadCounts.Length][];
                 var bytes = new long[threadCounts.Length];
@@ -85,6 +88,32 @@ namespace Fulcrum.Benchmarks
             }
             foreach (string bar in bars) output.WriteLine(bar);
             Kernels(output, quick);
+        }
+
+        /// <summary>
+        /// "--threads=1,2,4,8,16": the thread counts to step each scene with, stepped in alternation
+        /// (1 is always first, the reference of the bars); null without the option.
+        /// </summary>
+        static int[]? ThreadCounts(TextWriter output, out bool bad)
+        {
+            bad = false;
+            string? text = null;
+            foreach (string arg in Environment.GetCommandLineArgs())
+                if (arg.StartsWith("--threads=", StringComparison.Ordinal)) text = arg.Substring("--threads=".Length);
+            if (text == null) return null;
+            var counts = new List<int> { 1 };
+            foreach (string part in text.Split(','))
+            {
+                if (!int.TryParse(part, System.Globalization.NumberStyles.Integer, System.Globalization.CultureInfo.InvariantCulture, out int t) || t < 1 || t > 256)
+                {
+                    output.WriteLine($"--threads needs thread counts from 1 to 256 separated by commas, got '{text}'; nothing was run.");
+                    bad = true;
+                    return null;
+                }
+                if (!counts.Contains(t)) counts.Add(t);
+            }
+            counts.Sort();
+            return counts.ToArray();
         }
 
         /// <summary>

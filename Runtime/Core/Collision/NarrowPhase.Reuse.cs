@@ -101,7 +101,10 @@ namespace Fulcrum.Collision
         // position, anchors and separation; impulses stay for warm starting (every point
         // persists). Returns false, with nothing lost (the impulses are untouched), when a
         // point drifted past the speculative distance: the caller then runs the pair function.
-        bool ReuseManifolds(ref Contact ct, float speculative, in Pose poseA, in Pose poseB)
+        // Writes only this contact's manifolds (the parallel pass runs it on the workers): the
+        // caller adds the touching points and the deepest penetration to the step's figures
+        // (CountReuse).
+        bool ReuseManifolds(ref Contact ct, float speculative, in Pose poseA, in Pose poseB, out int touching, out float deepest)
         {
             ContactGraph g = Graph;
             ShapeStorage s = _in.Shapes;
@@ -114,8 +117,9 @@ namespace Fulcrum.Collision
             Vector3 toA = poseB.Position - _in.Bodies.Center[ct.BodyA], toB = poseB.Position - _in.Bodies.Center[ct.BodyB];
             float slop = _in.LinearSlop;
             Vector3 sum = Vector3.Zero;
-            int total = 0, touching = 0;
-            float deepest = 0;
+            int total = 0;
+            touching = 0;
+            deepest = 0;
             for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
             {
                 ref ContactManifold mf = ref g.Manifolds[m];
@@ -142,15 +146,20 @@ namespace Fulcrum.Collision
                     total++;
                 }
             }
-            Touching += touching;
-            MaxPenetration = MathF.Max(MaxPenetration, deepest);
             if (total > 0)
             {
                 Vector3 at = poseB.Position + sum / total;
                 ct.RelativeVelocity = PointVelocity(ct.BodyB, at) - PointVelocity(ct.BodyA, at);
             }
-            ReusedPairs++;
             return true;
+        }
+
+        // A reused contact's share of the step's figures (serial: the fields are the stage's).
+        void CountReuse(int touching, float deepest)
+        {
+            Touching += touching;
+            MaxPenetration = MathF.Max(MaxPenetration, deepest);
+            ReusedPairs++;
         }
 
         // The two stored surface points carried with rotations ra and rb (B's origin d from

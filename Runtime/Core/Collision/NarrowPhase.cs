@@ -36,14 +36,14 @@ namespace Fulcrum.Collision
         int _sortCount;
         readonly KeyOrder _contactOrder = new KeyOrder();
         bool _anyWoken;
-        // Parallel narrow phase (Threads > 1): the candidates' pair functions run on the worker
-        // pool first; per contact slot, the candidate index + 1 (0: none).
+        // Parallel narrow phase (Threads > 1): every contact's reuse or pair function runs on
+        // the worker pool first; per contact slot, its result's index + 1 (0: none).
         NarrowPhaseJob? _job;
         // The largest pair count and thread count ReserveParallel was given.
         int _reservedPairs, _reservedThreads;
         int[] _slot = Array.Empty<int>();
-        // Fewer candidates than this are not worth a trip through the pool.
-        const int MinParallelPairs = 32;
+        // Fewer contacts than this are not worth a trip through the pool.
+        const int MinParallelPairs = 64;
 
         /// <summary>
         /// Runs the pair functions of every contact with an awake body (on the worker pool first
@@ -159,7 +159,11 @@ namespace Fulcrum.Collision
             if (!awakeA && !awakeB) return true;
 
             int shapeA = ct.ShapeA, shapeB = ct.ShapeB;
-            if (FatBoxesParted(shapeA, shapeB))
+            // The parallel pass's answer for this contact, if it ran it with the awake states of
+            // now (the same inputs, so the same answers the tests below would give).
+            int slot = TakeParallelResult(c, awakeA, awakeB);
+            NarrowPhaseJob? job = slot >= 0 ? _job : null;
+            if (job != null ? job.FoundParted(slot) : FatBoxesParted(shapeA, shapeB))
             {
                 if ((ct.Flags & ContactFlags.Touching) != 0) host.ContactEnded(c);
                 g.Destroy(c);
@@ -173,26 +177,35 @@ namespace Fulcrum.Collision
             bool reduced = false;
             bool reuse = !sensor && ReuseEnabled;
             Pose poseA = default, poseB = default;
-            if (InReach(shapeA, shapeB, sensor))
+            if (job != null ? !job.FoundOutOfReach(slot) : InReach(shapeA, shapeB, sensor))
             {
-                if (!sensor) speculative = _in.SpeculativeBase + MotionBound(shapeA, shapeB);
+                if (!sensor) speculative = job != null ? job.Speculative(slot) : _in.SpeculativeBase + MotionBound(shapeA, shapeB);
+                int touching;
+                float deepest;
+                if (job != null && job.Reused(slot, out touching, out deepest))
+                {
+                    CountReuse(touching, deepest);
+                    AddToSort(ct.Key, c);
+                    WakeSleeper(bodyA, awakeA, ref host);
+                    WakeSleeper(bodyB, awakeB, ref host);
+                    return true;
+                }
                 if (reuse)
                 {
                     poseA = StepShapePose(shapeA);
                     poseB = StepShapePose(shapeB);
-                    if (CanReuseManifolds(ct, speculative, poseA, poseB) && ReuseManifolds(ref ct, speculative, poseA, poseB))
+                    if (job == null && CanReuseManifolds(ct, speculative, poseA, poseB) && ReuseManifolds(ref ct, speculative, poseA, poseB, out touching, out deepest))
                     {
-                        TakeParallelResult(c, awakeA, awakeB);
+                        CountReuse(touching, deepest);
                         AddToSort(ct.Key, c);
                         WakeSleeper(bodyA, awakeA, ref host);
                         WakeSleeper(bodyB, awakeB, ref host);
                         return true;
                     }
                 }
-                int slot = TakeParallelResult(c, awakeA, awakeB);
-                if (slot >= 0)
+                if (job != null)
                 {
-                    _job!.Restore(slot, buffer, speculative);
+                    job.Restore(slot, buffer, speculative);
                     reduced = true;
                 }
                 else

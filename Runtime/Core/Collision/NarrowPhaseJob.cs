@@ -5,12 +5,14 @@ using Fulcrum.Dynamics;
 namespace Fulcrum.Collision
 {
     /// <summary>
-    /// The pair functions of one step's candidate contacts, run on the worker pool before the
-    /// serial narrow-phase pass consumes them. Each candidate writes only its own fixed-size
-    /// slot (reduced patches and points), so the result does not depend on which thread ran
-    /// it; everything order-dependent (manifold allocation, warm starting, waking, sorting,
-    /// statistics) stays in the serial pass. Allocated once per world; the slots and the
-    /// per-block buffers grow before the parallel part, never inside it.
+    /// The parallel pass of the narrow phase: every contact's manifold reuse or pair function,
+    /// run on the worker pool before the serial pass consumes them. Each contact writes only its
+    /// own manifolds (reuse) or its own fixed-size slot (reduced patches and points), so the
+    /// result does not depend on which thread ran it; everything order-dependent (manifold
+    /// allocation, warm starting, waking, sorting, statistics) stays in the serial pass.
+    /// Slots are indexed by the contact's dense index at the start of the pass. Allocated once
+    /// per world; the slots and the per-block buffers grow before the parallel part, never
+    /// inside it.
     /// </summary>
     internal sealed class NarrowPhaseJob : IParallelJob
     {
@@ -19,9 +21,19 @@ namespace Fulcrum.Collision
         /// <summary>Points kept per pair: four per patch after reduction.</summary>
         public const int MaxPoints = MaxPatches * 4;
 
+        // What the pass found for a slot: nothing (both asleep, a sensor), manifolds reused,
+        // a pair function run, fat boxes parted (the serial pass destroys the contact), or the
+        // shapes out of reach (no pair function).
+        const byte None = 0, Reuse = 1, Collide = 2, Parted = 3, OutOfReach = 4;
+
         readonly NarrowPhase _narrowPhase;
         int[] _contact = new int[64];
+        byte[] _result = new byte[64];
         bool[] _awakeA = new bool[64], _awakeB = new bool[64];
+        // A reused contact's touching points and deepest penetration (the step's figures).
+        int[] _touching = new int[64];
+        float[] _deepest = new float[64];
+        float[] _speculative = new float[64];
         int[] _patchCount = new int[64];
         byte[] _patchPoints = new byte[64 * MaxPatches];
         Vector3[] _normal = new Vector3[64 * MaxPatches];
@@ -31,26 +43,69 @@ namespace Fulcrum.Collision
         ContactBuffer[] _buffers = Array.Empty<ContactBuffer>();
         int _blocks;
 
-        /// <summary>Candidates listed for this step.</summary>
+        /// <summary>Contacts (dense indices) of this step's pass.</summary>
         public int Count;
 
         /// <summary>A job for <paramref name="narrowPhase"/>'s contacts.</summary>
         public NarrowPhaseJob(NarrowPhase narrowPhase) { _narrowPhase = narrowPhase; }
 
-        /// <summary>The contact of candidate <paramref name="i"/>.</summary>
+        /// <summary>The contact of slot <paramref name="i"/>.</summary>
         public int Contact(int i) => _contact[i];
 
-        /// <summary>True when the bodies' awake states are still those the candidate was run with.</summary>
-        public bool Matches(int i, bool awakeA, bool awakeB) => _awakeA[i] == awakeA && _awakeB[i] == awakeB;
+        /// <summary>True when the bodies' awake states are still those slot <paramref name="i"/> was run with.</summary>
+        public bool Matches(int i, bool awakeA, bool awakeB) => _result[i] != None && _awakeA[i] == awakeA && _awakeB[i] == awakeB;
 
-        /// <summary>Lists a contact whose pair function should run (serial, before <see cref="Run"/>).</summary>
-        public void Add(int contact, bool awakeA, bool awakeB)
+        /// <summary>Whether slot <paramref name="i"/>'s contact's fat boxes parted (valid after <see cref="Matches"/>).</summary>
+        public bool FoundParted(int i) => _result[i] == Parted;
+
+        /// <summary>Whether slot <paramref name="i"/>'s shapes were out of reach (valid after <see cref="Matches"/>).</summary>
+        public bool FoundOutOfReach(int i) => _result[i] == OutOfReach;
+
+        /// <summary>The speculative distance slot <paramref name="i"/> was run with (reused or collided slots).</summary>
+        public float Speculative(int i) => _speculative[i];
+
+        /// <summary>Slot <paramref name="i"/>'s contact was found parted (<paramref name="parted"/>) or out of reach.</summary>
+        public void SetApart(int i, bool awakeA, bool awakeB, bool parted)
         {
-            if (Count == _contact.Length) Grow(2 * Count);
-            _contact[Count] = contact;
-            _awakeA[Count] = awakeA;
-            _awakeB[Count] = awakeB;
-            Count++;
+            _result[i] = parted ? Parted : OutOfReach;
+            _awakeA[i] = awakeA;
+            _awakeB[i] = awakeB;
+        }
+
+        /// <summary>Whether slot <paramref name="i"/>'s contact reused its manifolds, with its share of the step's figures.</summary>
+        public bool Reused(int i, out int touching, out float deepest)
+        {
+            touching = _touching[i];
+            deepest = _deepest[i];
+            return _result[i] == Reuse;
+        }
+
+        /// <summary>Slot <paramref name="i"/> holds contact <paramref name="contact"/>, with no result yet.</summary>
+        public void Clear(int i, int contact)
+        {
+            _contact[i] = contact;
+            _result[i] = None;
+        }
+
+        /// <summary>Slot <paramref name="i"/>'s contact reused its manifolds in place.</summary>
+        public void SetReused(int i, bool awakeA, bool awakeB, float speculative, int touching, float deepest)
+        {
+            _result[i] = Reuse;
+            _speculative[i] = speculative;
+            _awakeA[i] = awakeA;
+            _awakeB[i] = awakeB;
+            _touching[i] = touching;
+            _deepest[i] = deepest;
+        }
+
+        /// <summary>Slot <paramref name="i"/>'s contact ran its pair function: keeps the reduced patches.</summary>
+        public void SetCollided(int i, bool awakeA, bool awakeB, float speculative, ContactBuffer buffer)
+        {
+            _result[i] = Collide;
+            _speculative[i] = speculative;
+            _awakeA[i] = awakeA;
+            _awakeB[i] = awakeB;
+            Store(i, buffer);
         }
 
         /// <summary>
@@ -78,8 +133,12 @@ namespace Fulcrum.Collision
         void Grow(int n)
         {
             Array.Resize(ref _contact, n);
+            Array.Resize(ref _result, n);
             Array.Resize(ref _awakeA, n);
             Array.Resize(ref _awakeB, n);
+            Array.Resize(ref _touching, n);
+            Array.Resize(ref _deepest, n);
+            Array.Resize(ref _speculative, n);
             Array.Resize(ref _patchCount, n);
             Array.Resize(ref _patchPoints, n * MaxPatches);
             Array.Resize(ref _normal, n * MaxPatches);
@@ -88,30 +147,30 @@ namespace Fulcrum.Collision
             Array.Resize(ref _id, n * MaxPoints);
         }
 
-        /// <summary>Runs every listed candidate, split into contiguous blocks over the pool's threads.</summary>
-        public void Run(IParallelScheduler? pool)
+        /// <summary>
+        /// Runs the pass for the contacts at dense indices [0, <paramref name="count"/>), split
+        /// into contiguous blocks over the pool's threads.
+        /// </summary>
+        public void Run(int count, IParallelScheduler? pool)
         {
-            if (Count == 0) return;
-            int blocks = BlocksFor(Count, pool == null ? 1 : pool.ThreadCount);
+            Count = count;
+            if (count == 0) return;
+            if (_contact.Length < count) Grow(Math.Max(count, 2 * _contact.Length));
+            int blocks = BlocksFor(count, pool == null ? 1 : pool.ThreadCount);
             EnsureBuffers(blocks);
             _blocks = blocks;
             if (pool == null) Execute(0, blocks);
             else pool.For(this, 0, blocks, 1);
         }
 
-        /// <summary>Runs the candidates of blocks [<paramref name="start"/>, <paramref name="end"/>).</summary>
+        /// <summary>Runs the contacts of blocks [<paramref name="start"/>, <paramref name="end"/>).</summary>
         public void Execute(int start, int end)
         {
             for (int b = start; b < end; b++)
             {
                 ContactBuffer buffer = _buffers[b];
                 int from = (int)((long)Count * b / _blocks), to = (int)((long)Count * (b + 1) / _blocks);
-                for (int i = from; i < to; i++)
-                {
-                    _narrowPhase.CollideContact(_contact[i], buffer);
-                    buffer.Reduce();
-                    Store(i, buffer);
-                }
+                for (int i = from; i < to; i++) _narrowPhase.Precompute(i, this, buffer);
             }
         }
 

@@ -16,7 +16,8 @@ namespace Fulcrum.Benchmarks.Peers
     /// does not land on one engine; with --runs=N the summary gives each figure's range over runs.
     /// Options (--name=value or --name value): --runs=N (default 1), --threads=T (default 2), --substeps=S --iterations=I
     /// --relax=R (default: Fulcrum's defaults; relax passes apply to Fulcrum and Jitter2),
-    /// --scene=NAME (only the scenes whose name starts with NAME: tower, pyramid, pile).
+    /// --scene=NAME (only the scenes whose name starts with NAME: tower, pyramid, pile),
+    /// --scaling=1,2,4,8,16 (instead of the table: Fulcrum and Bepu on each thread count, see <see cref="PeerScaling"/>).
     /// </summary>
     public sealed class PeersBenchmark : IBenchmark
     {
@@ -36,6 +37,17 @@ namespace Fulcrum.Benchmarks.Peers
             PeerScene[] scenes = quick
                 ? new[] { PeerScene.Tower(20, 30, 120), PeerScene.Pyramid(6, 10, 60), PeerScene.PilePhases(5, 4, 10, 60, 60, 60) }
                 : new[] { PeerScene.Tower(20, 60, 600), PeerScene.Pyramid(20, 30, 270), PeerScene.PilePhases(12, 14, 30, 270, 300, 270) };
+
+            string? scaling = TextOption("--scaling=");
+            if (scaling != null)
+            {
+                int[]? counts = PeerScaling.ParseCounts(scaling, output);
+                if (counts == null) return;
+                string? missing = PeerRoster.MissingHint();
+                if (missing != null) output.WriteLine(missing);
+                PeerScaling.Run(output, PeerScaling.Scenes(quick), settings, counts, runs.Value, quick);
+                return;
+            }
 
             string? only = TextOption("--scene=");
             if (only != null)
