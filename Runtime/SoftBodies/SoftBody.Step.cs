@@ -252,10 +252,12 @@ namespace Fulcrum.SoftBodies
             : new TetRangeJob<StableNeoHookeanEnergy>(this, StableModel);
 
         // Elements a thread takes at a time: a colour of fewer than two such chunks runs on the
-        // caller, as waking a thread costs more than a few hundred elements (measured: with
-        // 32-element chunks a 10k-tet box ran 2-3 times slower on 2 threads than on 1). A
-        // multiple of eight, the tet kernels' block.
-        const int MinChunk = 256;
+        // caller. A multiple of eight, the tet kernels' block. Whether a pass is split at all is
+        // ThreadChoice's measurement: before it, 32-element chunks ran a 10k-tet box 2-3 times
+        // slower on 2 loaded threads than on 1, and 256 kept the 10k box's colours (about 350
+        // tets each) on the caller at any thread count (7.4 ms on 1 to 16 threads of a
+        // 16-core machine).
+        const int MinChunk = 64;
 
         // Pool or calling thread, per element family and pass (tets, membranes, bends; position or damping).
         readonly ThreadChoice[] _threadChoice = { new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice(), new ThreadChoice() };
