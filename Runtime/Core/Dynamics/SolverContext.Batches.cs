@@ -19,6 +19,7 @@ namespace Fulcrum.Dynamics
         {
             BodyStorage s = _storage;
             Bodies[0] = new SolverBody { DeltaRotation = Quaternion.Identity };
+            Vector3 gravity = _settings.Gravity;
             for (int k = 1; k < BodyCount; k++)
             {
                 int i = BodySlot[k];
@@ -33,6 +34,7 @@ namespace Fulcrum.Dynamics
                 body.DeltaRotation = Quaternion.Identity;
                 _startCenter[k] = s.Center[i];
                 _startRotation[k] = s.Rotation[i];
+                _kick[k] = dynamic ? SubstepKick.Of(s, i, gravity, _h) : default;
                 _colorMask[k] = 0;
             }
 

@@ -67,6 +67,7 @@ namespace Fulcrum.Dynamics
             {
                 SolverContext c = _c;
                 SolverBody[] bodies = c.Bodies;
+                SubstepKick[] kicks = c._kick;
                 BodyStorage s = c._storage;
                 if (Positions)
                 {
@@ -75,18 +76,19 @@ namespace Fulcrum.Dynamics
                     for (int k = start; k < end; k++)
                     {
                         ref SolverBody body = ref bodies[k];
+                        ref SubstepKick kick = ref kicks[k];
                         // The cap holds for what the constraints added too: a light body jointed
                         // to a heavy one in a contradictory pose was flung at 1e5 m/s (WorldFuzz).
-                        if (body.IsDynamic != 0) Integrator.ClampSpeed(speedCap, s.Radius[c.BodySlot[k]], ref body.LinearVelocity, ref body.AngularVelocity);
+                        if (body.IsDynamic != 0) Integrator.ClampSpeed(speedCap, kick.Radius, ref body.LinearVelocity, ref body.AngularVelocity);
                         body.DeltaPosition += h * body.LinearVelocity;
                         if (body.AngularVelocity == Vector3.Zero) continue;
-                        int slot = c.BodySlot[k];
-                        Vector3 ii = s.InverseInertiaPrincipal[slot];
-                        if (body.IsDynamic == 0 || (ii.X == ii.Y && ii.Y == ii.Z))
+                        if (body.IsDynamic == 0 || kick.Isotropic)
                         {
                             body.DeltaRotation = Rotation.Integrate(body.DeltaRotation, body.AngularVelocity, h);
                             continue;
                         }
+                        int slot = c.BodySlot[k];
+                        Vector3 ii = s.InverseInertiaPrincipal[slot];
                         AxisLocks locks = body.Locks & AxisLocks.Angular;
                         if (locks != 0)
                         {
@@ -109,13 +111,12 @@ namespace Fulcrum.Dynamics
                     }
                     return;
                 }
-                Vector3 g = c._settings.Gravity;
                 float maxSpeed = c._settings.MaxLinearSpeed;
                 for (int k = start; k < end; k++)
                 {
                     ref SolverBody body = ref bodies[k];
                     if (body.IsDynamic == 0) continue;
-                    Integrator.IntegrateVelocity(s, c.BodySlot[k], g, c._h, maxSpeed, ref body.LinearVelocity, ref body.AngularVelocity);
+                    kicks[k].Apply(maxSpeed, ref body.LinearVelocity, ref body.AngularVelocity);
                 }
             }
         }

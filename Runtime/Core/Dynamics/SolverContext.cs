@@ -26,6 +26,8 @@ namespace Fulcrum.Dynamics
         public int[] BodySlot = new int[16];
         Vector3[] _startCenter = new Vector3[16];
         Quaternion[] _startRotation = new Quaternion[16];
+        // Per dynamic solver body: its substep velocity update (filled by Prepare).
+        SubstepKick[] _kick = new SubstepKick[16];
         int[] _indexOfSlot = Array.Empty<int>();
         ulong[] _colorMask = new ulong[16];
 
@@ -159,6 +161,7 @@ namespace Fulcrum.Dynamics
                 Array.Resize(ref BodySlot, b);
                 Array.Resize(ref _startCenter, b);
                 Array.Resize(ref _startRotation, b);
+                Array.Resize(ref _kick, b);
                 Array.Resize(ref _colorMask, b);
             }
             if (_color.Length < manifolds + joints) _color = new int[manifolds + joints];
@@ -189,6 +192,7 @@ namespace Fulcrum.Dynamics
                 Array.Resize(ref BodySlot, n);
                 Array.Resize(ref _startCenter, n);
                 Array.Resize(ref _startRotation, n);
+                Array.Resize(ref _kick, n);
                 Array.Resize(ref _colorMask, n);
             }
             BodySlot[k] = slot;
