@@ -23,7 +23,7 @@ namespace Fulcrum.Tests.Foundation
             public void For(IParallelJob job, int start, int end, int minChunk)
             {
                 Calls++;
-                if (minChunk == 256) SoftCalls++;
+                if (minChunk == 64) SoftCalls++; // the soft bodies' chunk (SoftBody.MinChunk); no rigid pass asks for 64
                 int chunk = Math.Max(1, minChunk / 8);
                 int chunks = (end - start + chunk - 1) / chunk;
                 for (int c = chunks - 1; c >= 0; c--)

@@ -30,14 +30,18 @@ namespace Fulcrum.Dynamics
     /// </summary>
     internal sealed class ShockPropagation
     {
-        /// <summary>One point of a swept contact, from the lower body to the upper one.</summary>
+        /// <summary>
+        /// One swept contact (a manifold), from the lower body to the upper one. The sweep acts
+        /// on the centroid of the manifold's points (see SweepManifold), whose separation and
+        /// normal speed are linear in the point: the mean arms' angular terms stand for the points'.
+        /// </summary>
         struct Row
         {
             public int Upper, Lower;
             public Vector3 Normal;      // unit, from the lower body to the upper one
-            public Vector3 AngularU;    // rU x n
-            public Vector3 AngularL;    // rL x n
-            public float Separation;    // at the start of the step
+            public Vector3 AngularU;    // mean of rU x n over the points
+            public Vector3 AngularL;    // mean of rL x n over the points
+            public float Separation;    // mean over the points, at the start of the step
             public float Friction;      // the manifold's coefficient
         }
 
@@ -49,6 +53,8 @@ namespace Fulcrum.Dynamics
         int[] _adjacency = new int[32];
         int[] _queue = new int[16];
         int[] _levelStart = new int[17];
+        // Per manifold of the step's list: whether its pair touches (Build's three passes ask).
+        bool[] _touches = new bool[16];
         // Per solver body: the normal impulse the sweep's pushes on the bodies it carries put on
         // it in the last substep (carried down the stack), and the same being summed in this one.
         float[] _carried = new float[16], _carrying = new float[16];
@@ -69,11 +75,11 @@ namespace Fulcrum.Dynamics
             if (_degree.Length < bodies + 1) _degree = new int[bodies + 1];
             if (_levelStart.Length < bodies + 2) _levelStart = new int[bodies + 2];
             if (_adjacency.Length < 2 * manifolds) _adjacency = new int[2 * manifolds];
-            int rows = ContactManifold.MaxPoints * manifolds;
-            if (_rows.Length < rows)
+            if (_touches.Length < manifolds) _touches = new bool[manifolds];
+            if (_rows.Length < manifolds)
             {
-                _rows = new Row[rows];
-                _sorted = new Row[rows];
+                _rows = new Row[manifolds];
+                _sorted = new Row[manifolds];
             }
         }
 
@@ -114,6 +120,7 @@ namespace Fulcrum.Dynamics
             if (_degree.Length < bodyCount + 1) _degree = new int[2 * bodyCount + 1];
             if (_queue.Length < bodyCount) _queue = new int[2 * bodyCount];
             if (_adjacency.Length < 2 * manifoldCount) _adjacency = new int[4 * manifoldCount];
+            if (_touches.Length < manifoldCount) _touches = new bool[2 * manifoldCount];
             const int Unreached = int.MaxValue;
 
             // Adjacency of touching pairs in compressed rows (degree counts, prefix sums, fill).
@@ -121,15 +128,16 @@ namespace Fulcrum.Dynamics
             for (int k = 0; k < manifoldCount; k++)
             {
                 ref ContactManifold m = ref manifolds[manifoldList[k]];
-                if (!Touches(ref m, bodies, indexOfSlot, touching, dt)) continue;
+                _touches[k] = Touches(ref m, bodies, indexOfSlot, touching, dt);
+                if (!_touches[k]) continue;
                 _degree[IndexOf(indexOfSlot, m.BodyA) + 1]++;
                 _degree[IndexOf(indexOfSlot, m.BodyB) + 1]++;
             }
             for (int i = 0; i < bodyCount; i++) _degree[i + 1] += _degree[i];
             for (int k = 0; k < manifoldCount; k++)
             {
+                if (!_touches[k]) continue;
                 ref ContactManifold m = ref manifolds[manifoldList[k]];
-                if (!Touches(ref m, bodies, indexOfSlot, touching, dt)) continue;
                 int a = IndexOf(indexOfSlot, m.BodyA), b = IndexOf(indexOfSlot, m.BodyB);
                 _adjacency[_degree[a]++] = b;
                 _adjacency[_degree[b]++] = a;
@@ -168,7 +176,7 @@ namespace Fulcrum.Dynamics
                 ref ContactManifold m = ref manifolds[manifoldList[k]];
                 // Every touching contact: a contact resting now may be pressed past the depth
                 // within the step by a body landing on the one above it.
-                if (!Touches(ref m, bodies, indexOfSlot, touching, dt)) continue;
+                if (!_touches[k] || m.PointCount == 0) continue;
                 int a = IndexOf(indexOfSlot, m.BodyA), b = IndexOf(indexOfSlot, m.BodyB);
                 int la = _level[a], lb = _level[b];
                 if (la == lb || la == Unreached || lb == Unreached) continue;
@@ -177,25 +185,31 @@ namespace Fulcrum.Dynamics
                 ref SolverBody u = ref bodies[upper];
                 if (u.IsDynamic == 0) continue;
                 Vector3 n = aLower ? m.Normal : -m.Normal;
-                if (_rows.Length < _count + m.PointCount)
+                if (_rows.Length == _count)
                 {
-                    Array.Resize(ref _rows, 2 * (_count + m.PointCount));
+                    Array.Resize(ref _rows, 2 * _count);
                     _sorted = new Row[_rows.Length];
                 }
+                Vector3 armU = Vector3.Zero, armL = Vector3.Zero;
+                float separation = 0;
                 for (int p = 0; p < m.PointCount; p++)
                 {
                     ref ContactPoint cp = ref ContactManifold.Point(ref m, p);
-                    Vector3 rU = aLower ? cp.AnchorB : cp.AnchorA, rL = aLower ? cp.AnchorA : cp.AnchorB;
-                    ref Row r = ref _rows[_count];
-                    r.Upper = upper;
-                    r.Lower = lower;
-                    r.Normal = n;
-                    r.AngularU = Vector3.Cross(rU, n);
-                    r.AngularL = Vector3.Cross(rL, n);
-                    r.Separation = cp.Separation;
-                    r.Friction = m.Friction;
-                    _count++;
+                    armU += aLower ? cp.AnchorB : cp.AnchorA;
+                    armL += aLower ? cp.AnchorA : cp.AnchorB;
+                    separation += cp.Separation;
                 }
+                float inverseCount = 1f / m.PointCount;
+                ref Row r = ref _rows[_count];
+                r.Upper = upper;
+                r.Lower = lower;
+                r.Normal = n;
+                // The centroid's arms: r x n is linear in r.
+                r.AngularU = Vector3.Cross(armU * inverseCount, n);
+                r.AngularL = Vector3.Cross(armL * inverseCount, n);
+                r.Separation = separation * inverseCount;
+                r.Friction = m.Friction;
+                _count++;
             }
 
             // Lower levels first (a counting sort keeps the manifolds' order within a level).
@@ -247,15 +261,8 @@ namespace Fulcrum.Dynamics
                 Array.Resize(ref _carried, n);
                 Array.Resize(ref _carrying, n);
             }
-            int k = 0;
-            while (k < _count)
-            {
-                // The points of one manifold are consecutive (one upper and one lower body).
-                int end = k + 1;
-                while (end < _count && _sorted[end].Upper == _sorted[k].Upper && _sorted[end].Lower == _sorted[k].Lower) end++;
-                SweepManifold(bodies, k, end, depth, up, h, maxPush);
-                k = end;
-            }
+            int k;
+            for (k = 0; k < _count; k++) SweepManifold(bodies, ref _sorted[k], depth, up, h, maxPush);
             // What each body carried in this substep is what the next one's friction below it may use.
             for (k = 0; k < _count; k++)
             {
@@ -274,9 +281,8 @@ namespace Fulcrum.Dynamics
         // only. Removing it point by point spins the body a little each substep (the corners are
         // not symmetric in a Gauss-Seidel order), and a tower drifts sideways on that spin; the
         // rotation of a resting body is the solver's, the sinking the sweep's.
-        void SweepManifold(SolverBody[] bodies, int start, int end, float depth, Vector3 up, float h, float maxPush)
+        void SweepManifold(SolverBody[] bodies, ref Row first, float depth, Vector3 up, float h, float maxPush)
         {
-            ref Row first = ref _sorted[start];
             Vector3 n = first.Normal;
             // Under gravity the sweep carries support: a contact more than 45 degrees off the
             // vertical is left to the solver, and the approach is taken out along the vertical,
@@ -292,18 +298,10 @@ namespace Fulcrum.Dynamics
             ref SolverBody l = ref bodies[first.Lower];
             float linear = Vector3.Dot(n, u.LinearVelocity - l.LinearVelocity);
             float drift = Vector3.Dot(n, u.DeltaPosition - l.DeltaPosition);
-            Vector3 thetaU = u.DeltaAngle, thetaL = l.DeltaAngle;
-            float s = 0, vn = 0;
-            for (int i = start; i < end; i++)
-            {
-                ref Row r = ref _sorted[i];
-                // The separation at the pose now (ContactSolver's first-order update).
-                s += r.Separation + Vector3.Dot(thetaU, r.AngularU) - Vector3.Dot(thetaL, r.AngularL);
-                vn += Vector3.Dot(r.AngularU, u.AngularVelocity) - Vector3.Dot(r.AngularL, l.AngularVelocity);
-            }
-            float inverseCount = 1f / (end - start);
-            s = s * inverseCount + drift;
-            vn = vn * inverseCount + linear;
+            // The centroid's separation at the pose now (ContactSolver's first-order update)
+            // and its normal speed.
+            float s = first.Separation + Vector3.Dot(u.DeltaAngle, first.AngularU) - Vector3.Dot(l.DeltaAngle, first.AngularL) + drift;
+            float vn = Vector3.Dot(first.AngularU, u.AngularVelocity) - Vector3.Dot(first.AngularL, l.AngularVelocity) + linear;
             // Within the depth the soft contact rests as it would without the sweep; deeper, the
             // sweep holds it where it is. Speculatively: an approach that would carry the
             // centroid past the depth within this substep is cut to what reaches it, so a fast
