@@ -92,6 +92,8 @@ namespace Fulcrum.Dynamics
         byte[] _tilt = new byte[16];
         // Per cone-twist node: its one-sided rows released for this factorisation (bit 0: the cone, row 3; bit 1: the twist limit, row 4).
         byte[] _released = new byte[16];
+        // Per node: the mass of its subtree (GateLimits).
+        float[] _subtreeMass = new float[16];
         // Factor: D^-1 (Stride x Stride per node), H_ip (the block to the parent, rows of i, Stride x Stride room) and L = D^-1 H_ip.
         double[] _dinv = new double[16 * Block], _h = new double[16 * Block], _l = new double[16 * Block];
         double[] _x = new double[16 * Stride];
@@ -390,6 +392,7 @@ namespace Fulcrum.Dynamics
                 _free = new bool[capacity];
                 _tilt = new byte[capacity];
                 _released = new byte[capacity];
+                _subtreeMass = new float[capacity];
             }
             if (_dinv.Length < Block * capacity)
             {
@@ -449,26 +452,35 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>
-        /// How much heavier than the lighter body of a cone-twist joint the heaviest body of its
-        /// tree must be for the block to take the joint's cone and twist limits: 30.
+        /// How much heavier than the lighter body of a cone-twist joint the load it carries must
+        /// be for the block to take the joint's cone and twist limits: 4.
         /// </summary>
-        const float LimitMassRatio = 30f;
+        const float LimitMassRatio = 4f;
 
-        // The cone and twist limits of the tree whose nodes are _order[first .. end) stay in the
-        // block only where the tree carries a load far heavier than the joint's lighter body: row
-        // by row a limit is a spring on that body's own inertia, so a 1 kg arm under 1000 kg went
-        // through its cone, while between bodies of like mass (ragdolls: 2-35 kg) the rows hold,
-        // and in the block they kept a ragdoll pile from settling (awake after 15 s, where row by
-        // row it sleeps within 3.1 s): the limits the block takes are not held by joint friction
-        // in the same pass.
+        // The cone and twist limits of the tree whose nodes are _order[first .. end) (pre-order)
+        // stay in the block only where the joint carries a load several times its lighter body's
+        // mass: row by row a limit is a spring on that body's own inertia, so a 1 kg arm under
+        // 1000 kg went through its cone, and under 10-29 kg it overshot its 30 degree cone to
+        // 35-45 degrees (TGS) or 65-170 (PGS) and its 10 degree twist limit to 27-38 (TGS) or
+        // 75-93 (PGS); while between bodies of like mass the rows hold, and in the block they kept
+        // a ragdoll pile from settling (awake after 15 s, where row by row it sleeps within
+        // 3.1 s): the limits the block takes are not held by joint friction in the same pass.
+        // The load a joint carries: everything on its far side from the world, in a tree hung
+        // from a world anchor; in a free tree, the lighter of its two sides (a ragdoll's: 1.0-2.3
+        // times the joint's lighter part, so its limits stay in the rows).
         void GateLimits(SolverBody[] bodies, JointData[] data, int first, int end)
         {
-            float heaviest = 0;
-            for (int k = first; k < end; k++)
+            // Subtree masses, children before parents (reverse pre-order).
+            for (int k = first; k < end; k++) _subtreeMass[_order[k]] = 0f;
+            for (int k = end - 1; k >= first; k--)
             {
                 int node = _order[k];
-                if (_joint[node] < 0) heaviest = MathF.Max(heaviest, 1f / bodies[_body[node]].InverseMass);
+                if (_joint[node] < 0) _subtreeMass[node] += 1f / bodies[_body[node]].InverseMass;
+                if (_parent[node] >= 0) _subtreeMass[_parent[node]] += _subtreeMass[node];
             }
+            int root = _order[first];
+            bool anchored = _joint[root] >= 0;
+            float total = _subtreeMass[root];
             for (int k = first; k < end; k++)
             {
                 int node = _order[k];
@@ -478,7 +490,8 @@ namespace Fulcrum.Dynamics
                 float lighter = float.MaxValue;
                 if (_nodeA[node] >= 0) lighter = 1f / bodies[_body[_nodeA[node]]].InverseMass;
                 if (_nodeB[node] >= 0) lighter = MathF.Min(lighter, 1f / bodies[_body[_nodeB[node]]].InverseMass);
-                if (heaviest >= LimitMassRatio * lighter) continue;
+                float carried = anchored ? _subtreeMass[node] : MathF.Min(_subtreeMass[node], total - _subtreeMass[node]);
+                if (carried >= LimitMassRatio * lighter) continue;
                 j.DirectLimit = 0;
                 _rows[node] = JointKind.Ball;
                 _dim[node] = 3;
