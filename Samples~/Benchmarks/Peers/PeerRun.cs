@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Diagnostics;
 using System.Numerics;
 
@@ -48,6 +49,30 @@ namespace Fulcrum.Benchmarks.Peers
                 }
             }
             return Stopwatch.GetElapsedTime(start).TotalSeconds;
+        }
+
+        /// <summary>
+        /// One run over <paramref name="scenes"/>: every engine on a scene before the next scene,
+        /// in roster order or reversed, alternating between runs and scenes (so a slow spell of a
+        /// shared machine does not land on one engine). Returns the rows in roster order, phase by
+        /// phase, scene by scene.
+        /// </summary>
+        public static List<PeerResult> MeasureRun(IReadOnlyList<Func<IPeerEngine>> engines, PeerScene[] scenes, PeerSettings settings, int run)
+        {
+            var rows = new List<PeerResult>();
+            for (int sc = 0; sc < scenes.Length; sc++)
+            {
+                var measured = new PeerResult[engines.Count][];
+                bool reverse = ((run + sc) & 1) == 1;
+                for (int n = 0; n < engines.Count; n++)
+                {
+                    int e = reverse ? engines.Count - 1 - n : n;
+                    measured[e] = Measure(engines[e](), scenes[sc], settings);
+                }
+                for (int f = 0; f < scenes[sc].Phases.Count; f++)
+                    for (int e = 0; e < engines.Count; e++) rows.Add(measured[e][f]);
+            }
+            return rows;
         }
 
         /// <summary>

@@ -57,20 +57,7 @@ namespace Fulcrum.Benchmarks.Peers
             var all = new List<List<PeerResult>>();
             for (int run = 0; run < runs; run++)
             {
-                var rows = new List<PeerResult>();
-                for (int sc = 0; sc < scenes.Length; sc++)
-                {
-                    var measured = new PeerResult[configs.Count][];
-                    bool reverse = ((run + sc) & 1) == 1;
-                    for (int n = 0; n < configs.Count; n++)
-                    {
-                        int c = reverse ? configs.Count - 1 - n : n;
-                        measured[c] = PeerRun.Measure(configs[c](), scenes[sc], settings);
-                    }
-                    for (int f = 0; f < scenes[sc].Phases.Count; f++)
-                        for (int c = 0; c < configs.Count; c++) rows.Add(measured[c][f]);
-                }
-                all.Add(rows);
+                all.Add(PeerRun.MeasureRun(configs, scenes, settings, run));
                 output.WriteLine($"run {run + 1} of {runs} done");
             }
             Print(output, all);

@@ -82,20 +82,7 @@ namespace Fulcrum.Benchmarks.Peers
             var all = new List<List<PeerResult>>();
             for (int run = 0; run < runs.Value; run++)
             {
-                var rows = new List<PeerResult>();
-                for (int sc = 0; sc < scenes.Length; sc++)
-                {
-                    var measured = new PeerResult[engines.Count][];
-                    bool reverse = ((run + sc) & 1) == 1;
-                    for (int n = 0; n < engines.Count; n++)
-                    {
-                        int e = reverse ? engines.Count - 1 - n : n;
-                        measured[e] = PeerRun.Measure(engines[e](), scenes[sc], settings);
-                    }
-                    // Rows in roster order, phase by phase.
-                    for (int f = 0; f < scenes[sc].Phases.Count; f++)
-                        for (int e = 0; e < engines.Count; e++) rows.Add(measured[e][f]);
-                }
+                List<PeerResult> rows = PeerRun.MeasureRun(engines, scenes, settings, run);
                 all.Add(rows);
                 if (runs.Value > 1)
                 {
