@@ -35,8 +35,8 @@ namespace Fulcrum.Dynamics
                 // Twice: the second sweep has no approach left to take, but each body's friction
                 // on the one below it now has the load the first one put on the bodies above it
                 // (TGS carries it from one substep to the next).
-                context.Shock();
-                context.Shock();
+                context.Shock(SweepPass.Pushes);
+                context.Shock(SweepPass.Friction);
             }
             context.EndGuard(islands);
             context.StoreVelocities();
@@ -54,6 +54,7 @@ namespace Fulcrum.Dynamics
             if (s.PositionIterations > 0)
             {
                 context.LoadDeltas();
+                if (s.ShockPropagation) context.HoldLightSupports();
                 for (int i = 0; i < s.PositionIterations; i++) context.SolvePositions();
                 context.StorePositions(turnVelocities: true);
             }

@@ -29,12 +29,16 @@ namespace Fulcrum.Dynamics
         public void PrepareShock(IslandBuilder islands) =>
             _shock.Build(Bodies, BodyCount, _manifolds, islands.Manifolds, islands.ManifoldCount, _indexOfSlot, _settings.LinearSlop, _settings.ShockDepth, _dt);
 
-        /// <summary>The shock-propagation sweep of the substep (see <see cref="ShockPropagation"/>).</summary>
-        public void Shock()
+        /// <summary>
+        /// The shock-propagation sweep of the substep (see <see cref="ShockPropagation"/>), or one
+        /// of PGS's two (<paramref name="pass"/>; in the second a pressed contact's friction is for
+        /// at least the upper body's weight, see ShockPropagation.SweepManifold).
+        /// </summary>
+        public void Shock(SweepPass pass = SweepPass.Whole)
         {
             Vector3 g = _settings.Gravity;
             float length = g.Length();
-            _shock.Sweep(Bodies, _settings.ShockDepth, length > 0 ? -g / length : Vector3.Zero, _h, _settings.MaxContactPushSpeed);
+            _shock.Sweep(Bodies, _settings.ShockDepth, length > 0 ? -g / length : Vector3.Zero, _h, _settings.MaxContactPushSpeed, length, pass);
         }
 
         /// <summary>
@@ -157,6 +161,38 @@ namespace Fulcrum.Dynamics
         /// <summary>One non-linear Gauss-Seidel position pass (PGS).</summary>
         public void SolvePositions() => RunColors(ColorPass.Position);
 
+        /// <summary>Below this ratio of the upper body's mass to the lower one's, the position passes move both.</summary>
+        const float HeldMassRatio = 30f;
+
+        /// <summary>
+        /// Marks, for PGS's position passes, the contacts whose lower body (in the shock
+        /// propagation's levels) is at least <see cref="HeldMassRatio"/> times lighter than the
+        /// upper one: the passes then hold the lower body still, move the upper body alone, and
+        /// only past <see cref="WorldSettings.ShockDepth"/>, where the sweep rests such a pair.
+        /// A correction shared by mass moves the light body nearly all the way: a 100 or 1000 kg
+        /// box on a 1 kg one on a 25 degree ramp (mu 0.6) pressed the light box into the ramp
+        /// every pass, the ramp pushed it back along a normal of its own, and the light box
+        /// walked up the ramp at 1-2 cm/s while the load slid down off it. Call after
+        /// <see cref="Prepare"/> and <see cref="PrepareShock"/>.
+        /// </summary>
+        public void HoldLightSupports()
+        {
+            if (_held.Length < ContactCount) _held = new byte[Math.Max(16, 2 * ContactCount)];
+            Array.Clear(_held, 0, ContactCount);
+            if (!_shock.Levelled) return;
+            for (int i = 0; i < ContactCount; i++)
+            {
+                ref ContactConstraint c = ref Contacts[i];
+                int la = _shock.LevelOf(c.BodyA), lb = _shock.LevelOf(c.BodyB);
+                if (la == lb || la == int.MaxValue || lb == int.MaxValue) continue;
+                ref SolverBody a = ref Bodies[c.BodyA];
+                ref SolverBody b = ref Bodies[c.BodyB];
+                if (a.IsDynamic == 0 || b.IsDynamic == 0) continue;
+                if (la < lb ? b.InverseMass * HeldMassRatio <= a.InverseMass : a.InverseMass * HeldMassRatio <= b.InverseMass)
+                    _held[i] = (byte)(la < lb ? 1 : 2);
+            }
+        }
+
         // Colour by colour: the constraints of one colour touch disjoint dynamic bodies, so with
         // a worker pool they are split between threads; the overflow batch runs on the caller.
         void RunColors(ColorPass pass)
@@ -211,7 +247,7 @@ namespace Fulcrum.Dynamics
                         case ColorPass.Relax: ContactSolver.Solve(ref k, c.Points, c.Bodies, c._contactStep, false); break;
                         case ColorPass.Restitution: ContactSolver.ApplyRestitution(ref k, c.Points, c.Bodies, c._contactStep.RestitutionThreshold); break;
                         case ColorPass.Approach: ContactSolver.RefreshApproach(ref k, c.Points, c.Bodies); break;
-                        default: ContactPositionSolver.Solve(ref k, c.Points, c.Bodies, c._contactStep); break;
+                        default: ContactPositionSolver.Solve(ref k, c.Points, c.Bodies, c._contactStep, c._held[c._scalarContacts[ContactStart + i]], c._settings.ShockDepth); break;
                     }
                 }
                 if (Pass == ColorPass.Restitution || Pass == ColorPass.Approach) return;

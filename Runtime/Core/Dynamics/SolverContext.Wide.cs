@@ -241,7 +241,7 @@ namespace Fulcrum.Dynamics
                         {
                             ReadOnlySpan<int> lanes = WideLanes(g);
                             for (int lane = 0; lane < lanes.Length; lane++)
-                                ContactPositionSolver.Solve(ref Contacts[lanes[lane]], Points, Bodies, _contactStep);
+                                ContactPositionSolver.Solve(ref Contacts[lanes[lane]], Points, Bodies, _contactStep, _held[lanes[lane]], _settings.ShockDepth);
                         }
                         break;
                 }

@@ -61,6 +61,8 @@ namespace Fulcrum.Dynamics
         readonly BodyJob _bodyJob;
         readonly GroupJob _groupJob;
         readonly ShockPropagation _shock = new ShockPropagation();
+        // Per contact constraint, for PGS's position passes: 0, or the body held still (1 A, 2 B).
+        byte[] _held = new byte[16];
         readonly JointTreeSolver _trees = new JointTreeSolver();
 
         // Contacts of each colour not taken by the wide path, by index into Contacts.
@@ -170,6 +172,7 @@ namespace Fulcrum.Dynamics
             if (JointOrder.Length < joints) JointOrder = new int[joints];
             if (_scalarContacts.Length < manifolds) _scalarContacts = new int[manifolds];
             _shock.Reserve(b, manifolds);
+            if (_held.Length < manifolds) _held = new byte[manifolds];
             Guard.Reserve(b);
             ReserveWide(manifolds);
         }
