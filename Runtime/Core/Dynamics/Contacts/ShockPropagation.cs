@@ -327,9 +327,9 @@ namespace Fulcrum.Dynamics
         {
             Vector3 n = first.Normal;
             // Under gravity the sweep carries support: a contact more than 45 degrees off the
-            // vertical is left to the solver, and the approach is taken out along the vertical,
-            // so a slightly tilted normal does not nudge the body sideways every substep (a
-            // 40-row pyramid drifts twice as far when the push follows the normal).
+            // vertical is left to the solver, and within 5 degrees of level the approach is taken
+            // out along the vertical, so a slightly tilted normal does not nudge the body sideways
+            // every substep (a 40-row pyramid drifts twice as far when the push follows the normal).
             float lift = 1f;
             if (up != Vector3.Zero)
             {
@@ -409,8 +409,8 @@ namespace Fulcrum.Dynamics
             float speed = slide.Length();
             if (speed < 1e-9f) return;
             // The impulse mu N stops the upper body together with the load resting on it (which
-            // its own contacts then keep with it): a 1 kg box under 300 kg or more stopped dead on
-            // a ramp steeper than its friction when the impulse was spent on the box alone.
+            // its own contacts then keep with it): spent on the upper body alone, it would stop a
+            // 1 kg box under a heavy load dead on any ramp, however steep for its friction.
             float stop = MathF.Min(speed, first.Friction * normal / (mass + _carriedMass[first.Upper]));
             Vector3 change = -(stop / speed) * slide;
             // On a dynamic lower body (held still only as a support) the friction may slow the upper
