@@ -180,28 +180,22 @@ namespace Fulcrum.Collision
             if (job != null ? !job.FoundOutOfReach(slot) : InReach(shapeA, shapeB, sensor))
             {
                 if (!sensor) speculative = job != null ? job.Speculative(slot) : _in.SpeculativeBase + MotionBound(shapeA, shapeB);
-                int touching;
-                float deepest;
-                if (job != null && job.Reused(slot, out touching, out deepest))
+                if (reuse)
+                {
+                    poseA = StepShapePose(shapeA);
+                    poseB = StepShapePose(shapeB);
+                }
+                int touching = 0;
+                float deepest = 0;
+                bool reused = job != null ? job.Reused(slot, out touching, out deepest)
+                    : reuse && CanReuseManifolds(ct, speculative, poseA, poseB) && ReuseManifolds(ref ct, speculative, poseA, poseB, out touching, out deepest);
+                if (reused)
                 {
                     CountReuse(touching, deepest);
                     AddToSort(ct.Key, c);
                     WakeSleeper(bodyA, awakeA, ref host);
                     WakeSleeper(bodyB, awakeB, ref host);
                     return true;
-                }
-                if (reuse)
-                {
-                    poseA = StepShapePose(shapeA);
-                    poseB = StepShapePose(shapeB);
-                    if (job == null && CanReuseManifolds(ct, speculative, poseA, poseB) && ReuseManifolds(ref ct, speculative, poseA, poseB, out touching, out deepest))
-                    {
-                        CountReuse(touching, deepest);
-                        AddToSort(ct.Key, c);
-                        WakeSleeper(bodyA, awakeA, ref host);
-                        WakeSleeper(bodyB, awakeB, ref host);
-                        return true;
-                    }
                 }
                 if (job != null)
                 {

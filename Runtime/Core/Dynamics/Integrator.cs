@@ -30,29 +30,12 @@ namespace Fulcrum.Dynamics
                 if (b.Type[i] != BodyType.Dynamic || !b.Awake[i]) continue;
                 Vector3 v = b.LinearVelocity[i];
                 Vector3 w = b.AngularVelocity[i];
-                IntegrateVelocity(b, i, gravity, dt, maxSpeed, ref v, ref w);
+                SubstepKick.Of(b, i, gravity, dt).Apply(maxSpeed, ref v, ref w);
                 b.LinearVelocity[i] = v;
                 b.AngularVelocity[i] = w;
             }
         }
 
-        /// <summary>One body's velocity update (shared with the substeps of <see cref="TgsSolver"/>).</summary>
-        internal static void IntegrateVelocity(BodyStorage b, int i, Vector3 gravity, float dt, float maxSpeed, ref Vector3 v, ref Vector3 w)
-        {
-            v += dt * (gravity * b.GravityScale[i] + b.Force[i] * b.InverseMass[i]);
-            w += dt * (b.InverseInertiaWorld[i] * b.Torque[i]);
-            if (b.LinearDamping[i] > 0) v *= 1f / (1f + dt * b.LinearDamping[i]);
-            if (b.AngularDamping[i] > 0) w *= 1f / (1f + dt * b.AngularDamping[i]);
-            AxisLocks locks = b.Locks[i];
-            if (locks != AxisLocks.None)
-            {
-                // Gravity and forces along a locked axis do nothing; a velocity set along one
-                // (by the user, or before the lock) is dropped here, before it moves the body.
-                v = AxisLockMath.MaskLinear(v, locks);
-                w = AxisLockMath.MaskAngular(w, locks);
-            }
-            ClampSpeed(maxSpeed, b.Radius[i], ref v, ref w);
-        }
 
         /// <summary>
         /// Caps |w| at <see cref="Limits.MaxAngularSpeed"/>, the centre's speed |v| at

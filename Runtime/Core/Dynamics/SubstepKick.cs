@@ -3,12 +3,12 @@ using System.Numerics;
 namespace Fulcrum.Dynamics
 {
     /// <summary>
-    /// A dynamic solver body's velocity update for one TGS substep, and what its position update
-    /// reads, gathered once per step (<see cref="SolverContext.Prepare"/>) from the body
-    /// storage's slot-indexed columns. The substeps then stream over these in solver order: the
-    /// velocity update read eight columns of the body's slot per substep, a cache miss each in a
-    /// large pile (the solver orders bodies by constraints, not by slot). The same float
-    /// operations as <see cref="Integrator.IntegrateVelocity"/>, so the results are the same bits.
+    /// A dynamic body's velocity update over one (sub)step, and what a TGS substep's position
+    /// update reads: the one velocity integration of the free bodies (<see cref="Integrator"/>)
+    /// and of the TGS substeps, which gather it once per step (<see cref="SolverContext.Prepare"/>)
+    /// from the body storage's slot-indexed columns and then stream over these in solver order
+    /// (reading eight columns of the body's slot per substep was a cache miss each in a large
+    /// pile: the solver orders bodies by constraints, not by slot).
     /// </summary>
     internal struct SubstepKick
     {
@@ -44,8 +44,10 @@ namespace Fulcrum.Dynamics
         }
 
         /// <summary>
-        /// v += h (g s + F/m), w += h I⁻¹ τ, damping, axis locks, then the speed cap: as
-        /// <see cref="Integrator.IntegrateVelocity"/> does for the body this was gathered from.
+        /// v += h (g s + F/m), w += h I⁻¹ τ, damping v /= (1 + c h) (the implicit, Padé form of
+        /// exponential decay, stable for any c h), axis locks (gravity and forces along a locked
+        /// axis do nothing; a velocity set along one is dropped before it moves the body), then
+        /// the speed cap.
         /// </summary>
         public readonly void Apply(float maxSpeed, ref Vector3 v, ref Vector3 w)
         {
