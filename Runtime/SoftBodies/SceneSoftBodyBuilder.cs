@@ -1,7 +1,6 @@
 using System;
 using System.IO;
 using System.Numerics;
-using Fulcrum.Mathematics;
 using Fulcrum.Scenes;
 
 namespace Fulcrum.SoftBodies

@@ -1,4 +1,3 @@
-using System;
 using Fulcrum.Mathematics;
 
 namespace Fulcrum.Collision

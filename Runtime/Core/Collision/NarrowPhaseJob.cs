@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using Fulcrum.Dynamics;
 
 namespace Fulcrum.Collision
 {

@@ -1,6 +1,4 @@
-using System;
 using System.Numerics;
-using Fulcrum.Mathematics;
 
 namespace Fulcrum.Collision
 {

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Numerics;
-using Fulcrum.Mathematics;
 
 namespace Fulcrum.Scenes
 {

@@ -1,5 +1,4 @@
 using System.Collections.Generic;
-using Fulcrum.Mathematics;
 
 namespace Fulcrum
 {

@@ -1,5 +1,4 @@
 using System;
-using Fulcrum.Mathematics;
 
 namespace Fulcrum
 {

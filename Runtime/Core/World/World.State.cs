@@ -1,6 +1,5 @@
 using System;
 using System.IO;
-using System.Numerics;
 using Fulcrum.Collision;
 using Fulcrum.Dynamics;
 using Fulcrum.Mathematics;

@@ -1,5 +1,4 @@
 using System.Numerics;
-using Fulcrum.Mathematics;
 
 namespace Fulcrum.SoftBodies
 {

@@ -1,7 +1,6 @@
 #if NET
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
-using System.Runtime.Intrinsics.X86;
 
 namespace Fulcrum.SoftBodies
 {

@@ -1,5 +1,4 @@
 #if NET
-using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;

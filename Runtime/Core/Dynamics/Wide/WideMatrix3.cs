@@ -1,5 +1,4 @@
 #if NET
-using System.Numerics;
 using System.Runtime.CompilerServices;
 using Fulcrum.Mathematics;
 

@@ -1,5 +1,4 @@
 using System;
-using Fulcrum.Dynamics;
 
 namespace Fulcrum.Scenes
 {
