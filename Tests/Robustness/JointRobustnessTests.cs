@@ -153,6 +153,60 @@ namespace Fulcrum.Tests.Robustness
             Assert.That(cappedSpeed, Is.LessThan(0.5f), "and the load is held");
         }
 
+        // A 9.9 t slender capsule held to the world by a limited hinge and a ball joint whose
+        // anchors cannot both be met (reduced from WorldFuzz seed 10447). The two joint springs
+        // push each other with rest forces near 1e9 N; warm started up to the old bound
+        // (turning every body around at the speed cap in one step) their cancelling impulses
+        // grew by 3e4 N s a step to 8e6, and the capsule was lifted 6 m and thrown 13-16 m from
+        // its anchors (energy 8.4e5 J over its start, the fuzz allowance 5.3e5). Now no joint
+        // carries more than JointSolver.MaxWarmImpulse into the next step, and every joint on
+        // the bodies of one that would starts cold.
+        [TestCase(SolverType.Tgs, 1, 2)]
+        [TestCase(SolverType.Tgs, 4, 1)]
+        [TestCase(SolverType.Pgs, 1, 8)]
+        public void A_heavy_body_held_by_joints_that_cannot_both_be_met_neither_gains_energy_nor_is_thrown_away(SolverType solver, int substeps, int iterations)
+        {
+            WorldSettings s = WorldSettings.Default;
+            s.Solver = solver;
+            s.Substeps = substeps;
+            s.Iterations = iterations;
+            s.BlockSolver = false;
+            var w = new World(s);
+            w.AddShape(w.CreateBody(BodyDef.Static(new Vector3(0, -0.5f, 0))), ShapeDef.Of(ShapeGeometry.Box(new Vector3(20, 0.5f, 20))));
+            BodyDef def = BodyDef.Dynamic(new Vector3(1.461f, 0.940f, -0.641f));
+            def.Rotation = Quaternion.Normalize(new Quaternion(0.7573f, 0.0222f, 0.0287f, 0.6521f));
+            def.Mass = 9884f;
+            BodyHandle heavy = w.CreateBody(def);
+            w.AddShape(heavy, ShapeDef.Of(ShapeGeometry.Capsule(0.0854f, 0.2345f)));
+            JointDef hinge = JointDef.Hinge(heavy, BodyHandle.None, new Vector3(-0.128f, 0.031f, 0.123f), new Vector3(0.986f, 2.468f, 1.473f),
+                Vector3.Transform(Vector3.UnitX, Quaternion.Normalize(new Quaternion(0.3030f, 0.2710f, -0.6299f, 0.6618f))),
+                Vector3.Transform(Vector3.UnitX, Quaternion.Normalize(new Quaternion(-0.4835f, -0.2834f, -0.4043f, 0.7228f))));
+            hinge.LowerDeg = -56.7f;
+            hinge.UpperDeg = 0.33f;
+            w.CreateJoint(hinge);
+            w.CreateJoint(JointDef.Ball(heavy, BodyHandle.None, new Vector3(-0.340f, -0.567f, 0.579f), new Vector3(-1.115f, 1.962f, -1.239f)));
+            double Energy()
+            {
+                BodyRef b = w.GetBody(heavy);
+                return 0.5 * b.Mass * b.LinearVelocity.LengthSquared() + 0.5 * Vector3.Dot(b.AngularVelocity, b.AngularMomentum) - b.Mass * s.Gravity.Y * b.Position.Y;
+            }
+            double start = Energy(), rise = 0;
+            float farthest = 0;
+            for (int n = 0; n < 180; n++)
+            {
+                w.Step(Dt);
+                rise = Math.Max(rise, Energy() - start);
+                farthest = Math.Max(farthest, w.GetBody(heavy).Position.Length());
+            }
+            // What the correction passes may add (the fuzz allowance): the body at the joint and
+            // contact correction speeds, and lifted by the joints' error at creation (2.9 m).
+            float speed = s.MaxJointCorrectionSpeed + s.MaxContactPushSpeed;
+            double allowance = def.Mass * (0.5 * speed * speed - s.Gravity.Y * 2.9);
+            TestContext.Out.WriteLine($"{solver} {substeps}x{iterations}: energy rose at most {rise:G3} J (allowance {allowance:G3}); the body at most {farthest:F2} m from the origin (its anchors within 2.9 m of it)");
+            Assert.That(rise, Is.LessThan(allowance));
+            Assert.That(farthest, Is.LessThan(4f), "the body stays near its anchors");
+        }
+
         static (float stretch, float speed) HangLoad(float loadMass, float maxCorrection)
         {
             WorldSettings s = WorldSettings.Default;

@@ -118,12 +118,27 @@ namespace Fulcrum.Dynamics
             if (direct) PrepareRejected(contacts);
             else SplitWide(wide && WideContacts);
             float warmJoints = set.WarmStarting ? 1f : 0f;
-            // The most any joint can need per (sub)step: turning every body of the step around
-            // at the speed cap (see JointSolver.Begin).
+            // The most any joint can carry over from the last (sub)step (see JointSolver.Begin).
             float mass = 0;
             for (int k = 1; k < BodyCount; k++)
                 if (Bodies[k].IsDynamic != 0) mass += 1f / Bodies[k].InverseMass;
-            float maxJointImpulse = 2f * set.MaxLinearSpeed * mass;
+            float maxJointImpulse = JointSolver.MaxWarmImpulse(mass, _h);
+            // A joint over it is one of a set that contradict each other: every joint on its
+            // bodies starts cold with it (one left warm would fling the body with the set's
+            // whole cancelled impulse).
+            if (nj > 0)
+            {
+                if (_runaway.Length < BodyCount) _runaway = new bool[Bodies.Length];
+                Array.Clear(_runaway, 0, BodyCount);
+                for (int k = 0; k < nj; k++)
+                {
+                    ref JointData j = ref _joints.Data[islands.Joints[k]];
+                    if (!JointSolver.RunsAway(j, maxJointImpulse)) continue;
+                    _runaway[IndexOf(j.BodyA)] = true;
+                    _runaway[IndexOf(j.BodyB)] = true;
+                }
+                _runaway[0] = false; // static bodies and the world are shared by every joint
+            }
             for (int k = 0; k < nj; k++)
             {
                 int slot = islands.Joints[k];
@@ -132,7 +147,8 @@ namespace Fulcrum.Dynamics
                 ref JointData j = ref _joints.Data[slot];
                 j.SolverA = IndexOf(j.BodyA);
                 j.SolverB = IndexOf(j.BodyB);
-                JointSolver.Begin(ref j, _storage, _h, warmJoints, maxJointImpulse);
+                bool drop = _runaway[j.SolverA] || _runaway[j.SolverB];
+                JointSolver.Begin(ref j, _storage, _h, drop ? 0f : warmJoints, maxJointImpulse);
                 RunJoint(ref j, JointSolver.Pass.Prepare);
             }
         }

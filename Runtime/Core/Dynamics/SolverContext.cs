@@ -30,6 +30,7 @@ namespace Fulcrum.Dynamics
         SubstepKick[] _kick = new SubstepKick[16];
         int[] _indexOfSlot = Array.Empty<int>();
         ulong[] _colorMask = new ulong[16];
+        bool[] _runaway = new bool[16];
 
         // Constraints in colour order.
         public ContactConstraint[] Contacts = new ContactConstraint[16];
@@ -165,6 +166,7 @@ namespace Fulcrum.Dynamics
                 Array.Resize(ref _startRotation, b);
                 Array.Resize(ref _kick, b);
                 Array.Resize(ref _colorMask, b);
+                Array.Resize(ref _runaway, b);
             }
             if (_color.Length < manifolds + joints) _color = new int[manifolds + joints];
             if (Contacts.Length < manifolds) Contacts = new ContactConstraint[manifolds];
