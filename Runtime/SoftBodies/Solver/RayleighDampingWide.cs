@@ -17,44 +17,31 @@ namespace Fulcrum.SoftBodies
         {
             Vector256<float> invD = Vector256.Create(1f / (h * dampingTime * deviatoricStiffness));
             Vector256<float> invH = Vector256.Create(1f / (h * dampingTime * hydrostaticStiffness));
-            var block = new Block();
+            var block = new TetLanes();
             int e = start;
             for (; e + 8 <= end; e += 8)
             {
                 uint write = Impulses(ref block, tets, v, e, invD, invH);
-                if (write != 0) Correct(ref block, tets, x, v, e, write);
+                if (write != 0) TetLanes.Correct(ref block, tets, x, v, e, write);
             }
             return e;
         }
 
-        // One block's values between the two stages (split so that each register-allocates on its own).
-        struct Block
-        {
-            public Lanes8 V0, V1, V2, V3, P0, P1, P2, P3;
-            public Vector256<float> W0, W1, W2, W3;
-            public Vector256<float> Solved;
-        }
-
         // The dashpot impulses mu (the 2x2 solve) and the velocity changes p_k before the torque-free projection.
         [MethodImpl(MethodImplOptions.NoInlining)]
-        static uint Impulses(ref Block b, TetStream tets, Vector3[] v, int e, Vector256<float> invD, Vector256<float> invH)
+        static uint Impulses(ref TetLanes b, TetStream tets, Vector3[] v, int e, Vector256<float> invD, Vector256<float> invH)
         {
             int n = tets.Count;
             int[] vertices = tets.Vertices;
             float[] g = tets.Gradients;
-            float[] masses = tets.ElementMasses;
-            b.W0 = Lanes8.Load(masses, e);
-            b.W1 = Lanes8.Load(masses, n + e);
-            b.W2 = Lanes8.Load(masses, 2 * n + e);
-            b.W3 = Lanes8.Load(masses, 3 * n + e);
-            Vector256<float> active = ~Vector256.Equals(b.W0 + b.W1 + b.W2 + b.W3, Vector256<float>.Zero);
+            Vector256<float> active = b.LoadInverseMasses(tets, e);
             if (active.ExtractMostSignificantBits() == 0) return 0;
             Lanes8 v0 = Lanes8.Gather(v, vertices, e), v1 = Lanes8.Gather(v, vertices, n + e);
             Lanes8 v2 = Lanes8.Gather(v, vertices, 2 * n + e), v3 = Lanes8.Gather(v, vertices, 3 * n + e);
-            b.V0 = v0;
-            b.V1 = v1;
-            b.V2 = v2;
-            b.V3 = v3;
+            b.Base0 = v0;
+            b.Base1 = v1;
+            b.Base2 = v2;
+            b.Base3 = v3;
             Lanes8 gD0 = Lanes8.Load(g, 0, n, e), gD1 = Lanes8.Load(g, 3, n, e), gD2 = Lanes8.Load(g, 6, n, e), gD3 = Lanes8.Load(g, 9, n, e);
             Lanes8 gH0 = Lanes8.Load(g, 12, n, e), gH1 = Lanes8.Load(g, 15, n, e), gH2 = Lanes8.Load(g, 18, n, e), gH3 = Lanes8.Load(g, 21, n, e);
             Vector256<float> sD = Lanes8.Dot(gD0, v0) + Lanes8.Dot(gD1, v1) + Lanes8.Dot(gD2, v2) + Lanes8.Dot(gD3, v3);
@@ -69,32 +56,11 @@ namespace Fulcrum.SoftBodies
             Vector256<float> invDet = Vector256<float>.One / det;
             Vector256<float> mD = (sD * a22 - sH * a12) * invDet;
             Vector256<float> mH = (a11 * sH - a12 * sD) * invDet;
-            b.P0 = -(mD * gD0 + mH * gH0);
-            b.P1 = -(mD * gD1 + mH * gH1);
-            b.P2 = -(mD * gD2 + mH * gH2);
-            b.P3 = -(mD * gD3 + mH * gH3);
+            b.G0 = -(mD * gD0 + mH * gH0);
+            b.G1 = -(mD * gD1 + mH * gH1);
+            b.G2 = -(mD * gD2 + mH * gH2);
+            b.G3 = -(mD * gD3 + mH * gH3);
             return write;
-        }
-
-        // The torque-free projection about the final positions and the velocity writes.
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        static void Correct(ref Block b, TetStream tets, Vector3[] x, Vector3[] v, int e, uint write)
-        {
-            int n = tets.Count;
-            int[] vertices = tets.Vertices;
-            float[] masses = tets.ElementMasses;
-            Vector256<float> free = Vector256.GreaterThan(Lanes8.Load(masses, 8 * n + e), Vector256<float>.Zero) & b.Solved;
-            Lanes8 p0 = b.P0, p1 = b.P1, p2 = b.P2, p3 = b.P3;
-            if (free.ExtractMostSignificantBits() != 0)
-            {
-                Lanes8 x0 = Lanes8.Gather(x, vertices, e), x1 = Lanes8.Gather(x, vertices, n + e);
-                Lanes8 x2 = Lanes8.Gather(x, vertices, 2 * n + e), x3 = Lanes8.Gather(x, vertices, 3 * n + e);
-                TorqueFreeWide.Project(x0, x1, x2, x3, Lanes8.Load(masses, 4 * n + e), Lanes8.Load(masses, 5 * n + e), Lanes8.Load(masses, 6 * n + e), Lanes8.Load(masses, 7 * n + e), free, ref p0, ref p1, ref p2, ref p3);
-            }
-            Lanes8.Scatter(v, vertices, e, write, b.V0 + b.W0 * p0);
-            Lanes8.Scatter(v, vertices, n + e, write, b.V1 + b.W1 * p1);
-            Lanes8.Scatter(v, vertices, 2 * n + e, write, b.V2 + b.W2 * p2);
-            Lanes8.Scatter(v, vertices, 3 * n + e, write, b.V3 + b.W3 * p3);
         }
     }
 }

@@ -42,7 +42,7 @@ namespace Fulcrum.SoftBodies
             {
                 if (!Gradients(ref block, k, tets, x, e)) continue;
                 uint write = Multipliers(ref block, k, tets, lambdas, keep, e);
-                if (write != 0) Correct(ref block, tets, x, xPrev, e, write);
+                if (write != 0) TetLanes.Correct(ref block.T, tets, xPrev, x, e, write);
                 // Lanes near the volume floor (J below its trigger before the projection), one by one.
                 if (!loaded) continue;
                 uint low = (Vector256.LessThan(block.CH, floorTrigger) & block.Active).ExtractMostSignificantBits();
@@ -66,9 +66,9 @@ namespace Fulcrum.SoftBodies
         // past its inlining limits and leaves calls and spills in the loop).
         struct Block
         {
-            public Lanes8 X0, X1, X2, X3, D0, D1, D2, D3, H0, H1, H2, H3, G0, G1, G2, G3;
-            public Vector256<float> W0, W1, W2, W3;
-            public Vector256<float> Active, CD, CH, Solved;
+            public TetLanes T;
+            public Lanes8 D0, D1, D2, D3, H0, H1, H2, H3;
+            public Vector256<float> Active, CD, CH;
             public bool All;
         }
 
@@ -78,12 +78,7 @@ namespace Fulcrum.SoftBodies
         {
             int n = tets.Count;
             int[] vertices = tets.Vertices;
-            float[] masses = tets.ElementMasses;
-            b.W0 = Lanes8.Load(masses, e);
-            b.W1 = Lanes8.Load(masses, n + e);
-            b.W2 = Lanes8.Load(masses, 2 * n + e);
-            b.W3 = Lanes8.Load(masses, 3 * n + e);
-            Vector256<float> active = ~Vector256.Equals(b.W0 + b.W1 + b.W2 + b.W3, Vector256<float>.Zero);
+            Vector256<float> active = b.T.LoadInverseMasses(tets, e);
             uint activeBits = active.ExtractMostSignificantBits();
             if (activeBits == 0) return false;
             b.Active = active;
@@ -91,10 +86,10 @@ namespace Fulcrum.SoftBodies
 
             Lanes8 x0 = Lanes8.Gather(x, vertices, e), x1 = Lanes8.Gather(x, vertices, n + e);
             Lanes8 x2 = Lanes8.Gather(x, vertices, 2 * n + e), x3 = Lanes8.Gather(x, vertices, 3 * n + e);
-            b.X0 = x0;
-            b.X1 = x1;
-            b.X2 = x2;
-            b.X3 = x3;
+            b.T.Base0 = x0;
+            b.T.Base1 = x1;
+            b.T.Base2 = x2;
+            b.T.Base3 = x3;
             float[] rest = tets.RestInverse;
             Lanes8 r0 = Lanes8.Load(rest, 0, n, e), r1 = Lanes8.Load(rest, 3, n, e), r2 = Lanes8.Load(rest, 6, n, e);
             // F = Ds Dm^-1, column j = Ds (column j of Dm^-1).
@@ -123,7 +118,7 @@ namespace Fulcrum.SoftBodies
         static uint Multipliers(ref Block b, in Constants k, TetStream tets, Vector2[] lambdas, bool keep, int e)
         {
             int n = tets.Count;
-            Vector256<float> w0 = b.W0, w1 = b.W1, w2 = b.W2, w3 = b.W3;
+            Vector256<float> w0 = b.T.W0, w1 = b.T.W1, w2 = b.T.W2, w3 = b.T.W3;
             Vector256<float> kDD = w0 * Lanes8.Dot(b.D0, b.D0) + w1 * Lanes8.Dot(b.D1, b.D1) + w2 * Lanes8.Dot(b.D2, b.D2) + w3 * Lanes8.Dot(b.D3, b.D3);
             Vector256<float> kHH = w0 * Lanes8.Dot(b.H0, b.H0) + w1 * Lanes8.Dot(b.H1, b.H1) + w2 * Lanes8.Dot(b.H2, b.H2) + w3 * Lanes8.Dot(b.H3, b.H3);
             Vector256<float> kDH = w0 * Lanes8.Dot(b.D0, b.H0) + w1 * Lanes8.Dot(b.D1, b.H1) + w2 * Lanes8.Dot(b.D2, b.H2) + w3 * Lanes8.Dot(b.D3, b.H3);
@@ -143,7 +138,7 @@ namespace Fulcrum.SoftBodies
             Vector256<float> solved = Vector256.GreaterThan(det, Vector256.Create(1e-30f) * a11 * a22) & b.Active;
             uint write = solved.ExtractMostSignificantBits();
             if (write == 0) return 0;
-            b.Solved = solved;
+            b.T.Solved = solved;
             Vector256<float> invDet = Vector256<float>.One / det;
             Vector256<float> dlD = Avx.BlendVariable(Vector256<float>.Zero, (rD * a22 - rH * kDH) * invDet, solved);
             Vector256<float> dlH = Avx.BlendVariable(Vector256<float>.Zero, (a11 * rH - kDH * rD) * invDet, solved);
@@ -152,32 +147,11 @@ namespace Fulcrum.SoftBodies
             Vector256<float> newH = Avx2.Permute4x64((lambdaH + dlH).AsDouble(), 0xD8).AsSingle();
             Avx.UnpackLow(newD, newH).StoreUnsafe(ref lambda);
             Avx.UnpackHigh(newD, newH).StoreUnsafe(ref lambda, 8);
-            b.G0 = dlD * b.D0 + dlH * b.H0;
-            b.G1 = dlD * b.D1 + dlH * b.H1;
-            b.G2 = dlD * b.D2 + dlH * b.H2;
-            b.G3 = dlD * b.D3 + dlH * b.H3;
+            b.T.G0 = dlD * b.D0 + dlH * b.H0;
+            b.T.G1 = dlD * b.D1 + dlH * b.H1;
+            b.T.G2 = dlD * b.D2 + dlH * b.H2;
+            b.T.G3 = dlD * b.D3 + dlH * b.H3;
             return write;
-        }
-
-        // The torque-free projection and the position writes.
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        static void Correct(ref Block b, TetStream tets, Vector3[] x, Vector3[] xPrev, int e, uint write)
-        {
-            int n = tets.Count;
-            int[] vertices = tets.Vertices;
-            float[] masses = tets.ElementMasses;
-            Vector256<float> free = Vector256.GreaterThan(Lanes8.Load(masses, 8 * n + e), Vector256<float>.Zero) & b.Solved;
-            Lanes8 g0 = b.G0, g1 = b.G1, g2 = b.G2, g3 = b.G3;
-            if (free.ExtractMostSignificantBits() != 0)
-            {
-                Lanes8 p0 = Lanes8.Gather(xPrev, vertices, e), p1 = Lanes8.Gather(xPrev, vertices, n + e);
-                Lanes8 p2 = Lanes8.Gather(xPrev, vertices, 2 * n + e), p3 = Lanes8.Gather(xPrev, vertices, 3 * n + e);
-                TorqueFreeWide.Project(p0, p1, p2, p3, Lanes8.Load(masses, 4 * n + e), Lanes8.Load(masses, 5 * n + e), Lanes8.Load(masses, 6 * n + e), Lanes8.Load(masses, 7 * n + e), free, ref g0, ref g1, ref g2, ref g3);
-            }
-            Lanes8.Scatter(x, vertices, e, write, b.X0 + b.W0 * g0);
-            Lanes8.Scatter(x, vertices, n + e, write, b.X1 + b.W1 * g1);
-            Lanes8.Scatter(x, vertices, 2 * n + e, write, b.X2 + b.W2 * g2);
-            Lanes8.Scatter(x, vertices, 3 * n + e, write, b.X3 + b.W3 * g3);
         }
 
         // StableDeviatoric.Evaluate for eight lanes: the mask of lanes off rest, C_D (0 at rest), s, t and j = J - 1.
