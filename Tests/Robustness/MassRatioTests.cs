@@ -172,7 +172,10 @@ namespace Fulcrum.Tests.Robustness
         // pair's overlap by mass, moved the light box nearly all the way, into the ramp and back
         // out along a normal of its own, and it walked up the ramp while the load slid off it.
         // They now hold the light body still under a load 30 times heavier or more, and PGS's
-        // second sweep gives friction for the whole weight of a pressed contact: 0.5-124 mm.
+        // second sweep gives friction for the whole weight of a pressed contact (the upper body
+        // and the mass on it, along the normal), less what its contacts' own friction took:
+        // 0.5-95 mm (0.5-124 mm when the weight came from the pushes passed down, 111 of 148 N s
+        // at 1000:1, and the contacts' friction was counted twice).
         [Test]
         public void A_heavy_box_on_a_light_one_holds_on_a_ramp_within_its_friction(
             [Values(10f, 100f, 1000f)] float ratio, [Values(15f, 25f)] float degrees)
@@ -196,7 +199,7 @@ namespace Fulcrum.Tests.Robustness
             float tgs = Creep(SolverType.Tgs), pgs = Creep(SolverType.Pgs);
             TestContext.Out.WriteLine($"{ratio}:1 on {degrees} degrees (tan {MathF.Tan(degrees * MathF.PI / 180):F2}, mu 0.6): moved {tgs * 1000:F1} mm from 1 s to 5 s (PGS {pgs * 1000:F1} mm)");
             Assert.That(tgs, Is.LessThan(0.01f), "holds within 10 mm over 4 s");
-            Assert.That(pgs, Is.LessThan(0.2f), "PGS within 0.2 m");
+            Assert.That(pgs, Is.LessThan(0.15f), "PGS within 0.15 m");
         }
 
         // The same stack on a ramp steeper than its friction (mu 0.3 against the ramp, 0.6
@@ -208,7 +211,10 @@ namespace Fulcrum.Tests.Robustness
         // friction for the load stops the upper body with the load it carries. Measured in 2 s:
         // TGS 3.05-3.78 m at 10:1 to 1e4:1 (3-28 % past the closed form: the sweep's friction is
         // for its pushes and the load carried, not the whole weight), the load riding on the box;
-        // PGS 0.22-1.03 m (too little: the velocity passes' friction and the sweep's add up).
+        // PGS 2.51 m at 10:1 but 0.93 m at 300:1 and 0.32 m at 1e4:1 (too little: the sweep's
+        // friction on the top box slows the load to the light box's speed with no reaction on
+        // the light box, which the ramp's friction has already slowed for the whole stack; it was
+        // 0.22-1.03 m while the velocity passes' friction was also counted twice).
         // Before: TGS 3.0 m at 10:1 but 0.02 m at 300:1 and 1e4:1, PGS at most 0.16 m there.
         [Test]
         public void A_heavy_box_on_a_light_one_slides_down_a_ramp_steeper_than_its_friction(
@@ -237,7 +243,7 @@ namespace Fulcrum.Tests.Robustness
             Assert.That(tgs.light, Is.EqualTo(expected).Within(0.35f * expected), "slides down at about the Coulomb rate");
             Assert.That(tgs.heavy, Is.EqualTo(tgs.light).Within(0.1f), "the load rides on the light box");
             Assert.That(tgs.above, Is.GreaterThan(0.4f), "still on top");
-            Assert.That(pgs.light, Is.GreaterThan(0.05f * expected), "PGS slides too");
+            Assert.That(pgs.light, Is.GreaterThan(0.08f * expected), "PGS slides too");
         }
 
         static readonly ShapeGeometry GroundBox = ShapeGeometry.Box(new Vector3(50, 0.5f, 50));
