@@ -41,6 +41,30 @@ namespace Fulcrum.SoftBodies
         // in this substep (0: none); see MetByNewton.
         int[] _newtonOwner = Array.Empty<int>();
 
+        // The body's outward-wound surface triangles (ShapeFeatureContacts), copied once, with
+        // each one's tet: its fourth vertex and six times its rest volume.
+        int[]? _surface;
+        int[] _apex = Array.Empty<int>();
+        float[] _restVolume6 = Array.Empty<float>();
+
+        void Surface(SoftMesh mesh)
+        {
+            _surface = mesh.SurfaceTriangles.ToArray();
+            _apex = mesh.SurfaceApexes.ToArray();
+            _restVolume6 = new float[_apex.Length];
+            ReadOnlySpan<Vector3> rest = mesh.Vertices;
+            for (int t = 0; t < _apex.Length; t++)
+            {
+                Vector3 a = rest[_surface[3 * t]];
+                _restVolume6[t] = -Vector3.Dot(Vector3.Cross(rest[_surface[3 * t + 1]] - a, rest[_surface[3 * t + 2]] - a), rest[_apex[t]] - a);
+            }
+        }
+
+
+        // Per surface triangle over the current substep: the features' normal corrections and
+        // the friction spent against them (as _pushed and _held for vertices).
+        float[] _trianglePushed = Array.Empty<float>(), _triangleHeld = Array.Empty<float>();
+
         /// <summary>Vertex-triangle pairs gathered against triangle meshes for this step.</summary>
         public int MeshPairCount => _meshes.Count;
 
@@ -51,6 +75,7 @@ namespace Fulcrum.SoftBodies
         public void Gather(World world, SoftBody body, float dt, RigidCoupling coupling)
         {
             _count = 0;
+            if (body.Tets.Length > 0 && _surface == null) Surface(body.Mesh);
             _meshes.Clear();
             Vector3[] x = body.X, v = body.V;
             Aabb bounds = Aabb.Empty;
@@ -230,6 +255,14 @@ namespace Fulcrum.SoftBodies
                 _holdLast = new bool[vertexCount];
                 _newtonOwner = new int[vertexCount];
             }
+            int triangles = _surface != null ? _surface.Length / 3 : 0;
+            if (_trianglePushed.Length < triangles)
+            {
+                _trianglePushed = new float[triangles];
+                _triangleHeld = new float[triangles];
+            }
+            Array.Clear(_trianglePushed, 0, _trianglePushed.Length);
+            Array.Clear(_triangleHeld, 0, _triangleHeld.Length);
             bool[] last = _holdLast;
             _holdLast = _holdNow;
             _holdNow = last;
@@ -296,6 +329,10 @@ namespace Fulcrum.SoftBodies
                     x[i] -= wi * dlt * t;
                     coupling.Push(owner, contact, dlt * t, h);
                 }
+                // The shape's corners and edges against the surface triangles (a tet body's).
+                if (normal && body.Tets.Length > 0 && geometry.Type != ShapeType.Plane
+                    && !(world.Bodies.Type[owner] == BodyType.Dynamic && world.Bodies.Mass[owner] > ShapeFeatureContacts.MaxLoadRatio * body.TotalMass))
+                    ShapeFeatureContacts.Solve(body, _surface!, _apex, _restVolume6, geometry, pose, owner, coupling, h, mu, _trianglePushed, _triangleHeld);
             }
             // Meshes only before the elastic pass: a second friction pass there let a jelly falling
             // at 4 m/s onto a mesh floor end 2.5 mm deep (the bound is 2 mm).

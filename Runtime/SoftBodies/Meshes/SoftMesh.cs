@@ -18,13 +18,14 @@ namespace Fulcrum.SoftBodies
         readonly int[] _tets;
         readonly int[] _triangles;
         readonly int[] _surface;
+        readonly int[] _surfaceApexes = Array.Empty<int>();
 
         SoftMesh(Vector3[] vertices, int[] tets, int[] triangles)
         {
             _vertices = vertices;
             _tets = tets;
             _triangles = triangles;
-            _surface = tets.Length > 0 ? TetSurface.Extract(vertices, tets) : triangles;
+            _surface = tets.Length > 0 ? TetSurface.Extract(vertices, tets, out _surfaceApexes) : triangles;
             Aabb bounds = Aabb.Empty;
             foreach (Vector3 v in vertices) bounds = Aabb.Union(bounds, v);
             Bounds = bounds;
@@ -41,6 +42,9 @@ namespace Fulcrum.SoftBodies
 
         /// <summary>The boundary triangles, wound outward (for drawing and self-collision); a shell's own triangles.</summary>
         public ReadOnlySpan<int> SurfaceTriangles => _surface;
+
+        /// <summary>Per boundary triangle of a tet mesh: the fourth vertex of the tet it bounds (empty for a shell).</summary>
+        internal ReadOnlySpan<int> SurfaceApexes => _surfaceApexes;
 
         /// <summary>Number of vertices.</summary>
         public int VertexCount => _vertices.Length;
