@@ -16,7 +16,9 @@ namespace Fulcrum.SoftBodies
     /// Every shape kind takes part: spheres, boxes, capsules, planes and convex hulls through
     /// <see cref="ShapeDistance"/>; static triangle meshes one triangle at a time through
     /// <see cref="MeshVertexContacts"/>. A body with several shapes (a compound) meets each of
-    /// them in turn.
+    /// them in turn. After a shape's vertex contacts, its corners and edges meet the surface
+    /// triangles of a tet body (<see cref="ShapeFeatureContacts"/>), which its vertices alone let
+    /// pass between them.
     /// </summary>
     internal sealed class ShapeContactSolver
     {
@@ -59,7 +61,6 @@ namespace Fulcrum.SoftBodies
                 _restVolume6[t] = -Vector3.Dot(Vector3.Cross(rest[_surface[3 * t + 1]] - a, rest[_surface[3 * t + 2]] - a), rest[_apex[t]] - a);
             }
         }
-
 
         // Per surface triangle over the current substep: the features' normal corrections and
         // the friction spent against them (as _pushed and _held for vertices).

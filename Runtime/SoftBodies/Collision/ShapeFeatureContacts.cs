@@ -6,7 +6,9 @@ using Fulcrum.Mathematics;
 namespace Fulcrum.SoftBodies
 {
     /// <summary>
-    /// A rigid shape's corners, edges and tips against a tet body's surface triangles. The
+    /// A convex rigid shape's corners, edges and tips (spheres, boxes, capsules, hulls; a plane
+    /// has none, and a triangle mesh's vertices are not tested) against a tet body's surface
+    /// triangles. The
     /// vertex contacts (<see cref="ShapeContactSolver"/>) push only the soft body's vertices out
     /// of a shape, so a feature smaller than the mesh spacing passes between them: a 0.5 m crate
     /// (10 kg to 1 t) dropped corner first on a 0.3 m slab of 0.15 m cells came to rest with its
