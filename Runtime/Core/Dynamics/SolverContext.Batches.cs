@@ -118,7 +118,7 @@ namespace Fulcrum.Dynamics
             if (direct) PrepareRejected(contacts);
             else SplitWide(wide && WideContacts);
             float warmJoints = set.WarmStarting ? 1f : 0f;
-            // The most any joint can carry over from the last (sub)step (see JointSolver.Begin).
+            // The most any joint can carry over from the last (sub)step (see JointSolver.RunsAway).
             float mass = 0;
             for (int k = 1; k < BodyCount; k++)
                 if (Bodies[k].IsDynamic != 0) mass += 1f / Bodies[k].InverseMass;
@@ -148,7 +148,7 @@ namespace Fulcrum.Dynamics
                 j.SolverA = IndexOf(j.BodyA);
                 j.SolverB = IndexOf(j.BodyB);
                 bool drop = _runaway[j.SolverA] || _runaway[j.SolverB];
-                JointSolver.Begin(ref j, _storage, _h, drop ? 0f : warmJoints, maxJointImpulse);
+                JointSolver.Begin(ref j, _storage, _h, drop ? 0f : warmJoints);
                 RunJoint(ref j, JointSolver.Pass.Prepare);
             }
         }

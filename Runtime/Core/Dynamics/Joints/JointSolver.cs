@@ -48,16 +48,10 @@ namespace Fulcrum.Dynamics
 
         /// <summary>
         /// Fills the step geometry of a joint (arms, frames, centre offset) from the bodies'
-        /// poses at the start of the step and scales its impulses by <paramref name="warmScale"/>.
+        /// poses at the start of the step and scales its impulses by <paramref name="warmScale"/>
+        /// (0: a cold start; the caller decides it, see <see cref="RunsAway"/>).
         /// </summary>
-        /// <remarks>
-        /// A joint whose last impulse exceeds <paramref name="maxImpulse"/> (N s; per metre of
-        /// arm for the angular part; <see cref="MaxWarmImpulse"/>) is not warm started: only rows
-        /// that contradict each other accumulate that much (their impulses drift along
-        /// directions whose effects cancel, grow every step and overflowed to infinity in a
-        /// fuzzed world).
-        /// </remarks>
-        public static void Begin(ref JointData j, BodyStorage bodies, float h, float warmScale, float maxImpulse)
+        public static void Begin(ref JointData j, BodyStorage bodies, float h, float warmScale)
         {
             Pose(bodies, j.BodyA, out Vector3 originA, out Quaternion qA, out Vector3 cA);
             Pose(bodies, j.BodyB, out Vector3 originB, out Quaternion qB, out Vector3 cB);
@@ -68,7 +62,6 @@ namespace Fulcrum.Dynamics
             j.FrameB = qB * j.LocalFrameB;
             // The parts hold impulses per (sub)step: rescale when the (sub)step changed.
             float scale = warmScale * (j.StepDt > 0 ? h / j.StepDt : 1f);
-            if (RunsAway(j, maxImpulse)) scale = 0f;
             switch (j.Kind)
             {
                 case JointKind.Ball: j.Parts.Ball.Scale(scale); break;
@@ -94,10 +87,16 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public const float MaxSustainedAcceleration = 1000f;
 
-        /// <summary>The warm-start bound of <see cref="Begin"/> for a step moving <paramref name="mass"/> kg in (sub)steps of <paramref name="h"/> s, N s.</summary>
+        /// <summary>The warm-start bound for a step moving <paramref name="mass"/> kg in (sub)steps of <paramref name="h"/> s, N s (see <see cref="RunsAway"/>).</summary>
         public static float MaxWarmImpulse(float mass, float h) => 2f * MaxSustainedAcceleration * h * mass;
 
-        /// <summary>True when the joint's last impulse exceeds <paramref name="maxImpulse"/> (see <see cref="Begin"/>).</summary>
+        /// <summary>
+        /// True when the joint's last impulse exceeds <paramref name="maxImpulse"/> (N s; per metre
+        /// of arm for the angular part, the arms of the step it was solved in; <see cref="MaxWarmImpulse"/>):
+        /// such a joint is not warm started. Only rows that contradict each other accumulate that
+        /// much (their impulses drift along directions whose effects cancel, grow every step and
+        /// overflowed to infinity in a fuzzed world).
+        /// </summary>
         public static bool RunsAway(in JointData j, float maxImpulse)
         {
             float linear = j.Force.Length() * j.StepDt, angular = j.Torque.Length() * j.StepDt;
