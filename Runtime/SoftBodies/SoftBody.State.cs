@@ -35,7 +35,6 @@ namespace Fulcrum.SoftBodies
             w.WriteArray(Bends);
             w.WriteArray(BendLambda);
             w.WriteArray(Attachments);
-            w.WriteArray(AttachedVelocity);
             w.Write(Substeps);
             w.Write(Iterations);
             w.Write(DampingTime);
@@ -77,7 +76,6 @@ namespace Fulcrum.SoftBodies
             BendElement[] bendElements = r.ReadArrayExactly<BendElement>("soft bend pairs", Bends.Length);
             float[] bendLambda = r.ReadArrayExactly<float>("soft bend multipliers", BendLambda.Length);
             Attachment[] attached = r.ReadArrayExactly<Attachment>("soft attachments", Attachments.Length);
-            Vector3[] attachedVelocity = r.ReadArrayExactly<Vector3>("soft attachment velocities", AttachedVelocity.Length);
             int substeps = r.Read<int>("soft substeps"), iterations = r.Read<int>("soft iterations");
             float dampingTime = r.Read<float>("soft damping time"), linearDamping = r.Read<float>("soft linear damping");
             float gravityScale = r.Read<float>("soft gravity scale"), friction = r.Read<float>("soft friction");
@@ -125,7 +123,6 @@ namespace Fulcrum.SoftBodies
                 bendElements.CopyTo(Bends, 0);
                 bendLambda.CopyTo(BendLambda, 0);
                 attached.CopyTo(Attachments, 0);
-                attachedVelocity.CopyTo(AttachedVelocity, 0);
                 Substeps = substeps;
                 Iterations = iterations;
                 DampingTime = dampingTime;

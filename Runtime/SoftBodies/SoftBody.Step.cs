@@ -30,7 +30,15 @@ namespace Fulcrum.SoftBodies
             if (CollideWithShapes) Contacts.Gather(World, this, dt, coupling);
             AttachmentSolver.Track(World, Attachments, coupling);
             SelfContacts?.FindPairs(X, V, dt);
-            float heaviest = MathF.Max(CollideWithShapes ? Contacts.HeaviestBody(World, X, Down()) : 0f, AttachmentSolver.HeaviestBody(World, Attachments));
+            float heaviest = CollideWithShapes ? Contacts.HeaviestBody(World, X, Down()) : 0f;
+            // An attached body hangs its weight on this body only when a pin holds this body to
+            // the world (a rope or a sheet hung from a point); otherwise the bodies carry it (a
+            // cloth pinned to a pole) or the two move freely together, and the scaling, which
+            // also divides this body's weight, would make it float and hand the bodies its
+            // scaled momentum: a 533 kg body spinning with a 1 kg cloth pinned to it gained
+            // 1e8 J within two steps, and again as soon as the cloth came near the ground.
+            if (Attachments.Length > 0 && HasPinnedVertex())
+                heaviest = MathF.Max(heaviest, AttachmentSolver.HeaviestBody(World, Attachments));
             ScaleInertia(heaviest / (InertiaRatio * TotalMass));
             if (Tets.Length > 0)
             {
@@ -42,6 +50,13 @@ namespace Fulcrum.SoftBodies
                 // Pressed from outside: it may touch a rigid shape, or is attached to a body.
                 TetData.Loaded = Touching;
             }
+        }
+
+        // Whether some vertex is pinned (held in place).
+        bool HasPinnedVertex()
+        {
+            for (int i = 0; i < W.Length; i++) if (W[i] == 0f) return true;
+            return false;
         }
 
         // The unit direction of this body's gravity (zero without gravity).
@@ -177,9 +192,8 @@ namespace Fulcrum.SoftBodies
             EndPositions(h, coupling);
             if (DampingTime > 0f)
             {
-                for (int k = 0; k < Attachments.Length; k++) AttachedVelocity[k] = V[Attachments[k].Vertex];
                 RunElements(h, damping: true, pool);
-                if (Attachments.Length > 0) AttachmentSolver.HandDampingToBodies(World, Attachments, X, V, M, AttachedVelocity, coupling);
+                if (Attachments.Length > 0) AttachmentSolver.HandDampingToBodies(World, Attachments, X, V, W, coupling);
             }
         }
 

@@ -48,7 +48,6 @@ namespace Fulcrum.SoftBodies
         internal readonly int[] BendColors;
         internal readonly float[] BendLambda;
         internal readonly Attachment[] Attachments;
-        internal readonly Vector3[] AttachedVelocity;   // attached vertices' velocity before the damping pass
         internal readonly ProbeBinding[] Probes;
 
         internal readonly StableNeoHookeanEnergy StableModel;
@@ -207,7 +206,6 @@ namespace Fulcrum.SoftBodies
                 }
             }
             Attachments = attachments.ToArray();
-            AttachedVelocity = new Vector3[Attachments.Length];
             Array.Copy(W, FreeW, n);
             for (int k = 0; k < Attachments.Length; k++) FreeW[Attachments[k].Vertex] = 0f;
             Probes = ProbeBinder.Bind(mesh, def.Probes);

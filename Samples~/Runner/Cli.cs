@@ -63,7 +63,7 @@ public static class Cli
                 case "check": return CheckCommand.Run(new Arguments("check", args, 1), output, error);
                 case "sweep": return SweepCommand.Run(new Arguments("sweep", args, 1, SweepCommand.Flags), output);
                 case "report": return ReportCommand.Run(args[1..], output);
-                case "fuzz": return FuzzCommand.Run(new Arguments("fuzz", args, 1, FuzzCommand.Flags), output);
+                case "fuzz": return FuzzCommand.Run(new Arguments("fuzz", args, 1, FuzzCommand.Flags, FuzzCommand.Switches), output);
                 case "view": return ViewCommand.Run(new Arguments("view", args, 1, ViewCommand.Flags), output);
                 case "help" or "--help" or "-h":
                     output.WriteLine(Usage);

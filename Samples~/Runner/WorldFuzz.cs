@@ -259,7 +259,7 @@ namespace Fulcrum.Runner
             return b.Position + Vector3.Transform(local, b.Rotation);
         }
 
-        static ShapeGeometry RandomShape(Random r)
+        internal static ShapeGeometry RandomShape(Random r)
         {
             float Range(float lo, float hi) => lo + (hi - lo) * (float)r.NextDouble();
             switch (r.Next(5))

@@ -81,11 +81,11 @@ namespace Fulcrum.SoftBodies
             };
             Aabb meshBox = s.WorldAabb[shape];
             Vector3[] x = body.X, v = body.V;
-            float[] w = body.W;
+            float[] free = body.FreeW;
             float basePad = body.CollisionRadius + gravity * dt * dt + 0.002f;
             for (int i = 0; i < x.Length; i++)
             {
-                if (w[i] == 0f) continue;
+                if (free[i] == 0f) continue; // pinned or attached: see ShapeContactSolver.Solve
                 Vector3 end = x[i] + v[i] * dt;
                 float pad = basePad + 0.5f * v[i].Length() * dt;
                 var path = new Aabb(Vector3.Min(x[i], end), Vector3.Max(x[i], end)).Expanded(pad);

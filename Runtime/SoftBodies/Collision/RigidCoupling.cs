@@ -171,6 +171,32 @@ namespace Fulcrum.SoftBodies
             return linear + Vector3.Dot(rn, b.InverseInertiaWorld[slot] * rn);
         }
 
+        /// <summary>
+        /// The angle a dynamic body turns through, rad, per unit position impulse (kg m) along
+        /// <paramref name="direction"/> at <paramref name="point"/>: |I^-1 (r x n)|; 0 for static
+        /// and kinematic bodies.
+        /// </summary>
+        public float TurnPerImpulse(int slot, Vector3 point, Vector3 direction)
+        {
+            BodyStorage b = _bodies;
+            if (b.Type[slot] != BodyType.Dynamic) return 0f;
+            return (b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], direction)).Length();
+        }
+
+        /// <summary>
+        /// The inverse mass matrix of a dynamic body at <paramref name="point"/>: the change of
+        /// that point's velocity per unit impulse there, M^-1 + [r]^T I^-1 [r]; zero for static
+        /// and kinematic bodies.
+        /// </summary>
+        public Mat3 PointInverseMass(int slot, Vector3 point)
+        {
+            BodyStorage b = _bodies;
+            if (b.Type[slot] != BodyType.Dynamic) return Mat3.Zero;
+            Mat3 skew = Mat3.Skew(point - b.Center[slot]);
+            Vector3 linear = AxisLockMath.MaskLinear(new Vector3(b.InverseMass[slot]), b.Locks[slot]);
+            return Mat3.Diagonal(linear) + skew.Transposed * (b.InverseInertiaWorld[slot] * skew);
+        }
+
         /// <summary>The velocity of the body's material point at <paramref name="point"/>, m/s.</summary>
         public Vector3 PointVelocity(int slot, Vector3 point)
         {

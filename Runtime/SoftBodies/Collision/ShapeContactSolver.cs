@@ -283,7 +283,7 @@ namespace Fulcrum.SoftBodies
         {
             ShapeStorage s = world.Shapes;
             Vector3[] x = body.X, xPrev = body.XPrev;
-            float[] w = body.W;
+            float[] w = body.W, free = body.FreeW;
             float radius = body.CollisionRadius;
             for (int k = 0; k < _count; k++)
             {
@@ -294,8 +294,14 @@ namespace Fulcrum.SoftBodies
                 float mu = Combine.Values(body.Friction, s.FrictionCombine[shape], s.Friction[shape], s.FrictionCombine[shape]);
                 for (int i = 0; i < x.Length; i++)
                 {
+                    // Pinned and attached vertices (no free inverse mass) take no contacts: an
+                    // attached vertex moves with its body, whose own shapes meet the world.
+                    // Pushed out of the ground while its body held it there (a cloth pinned to a
+                    // 9 t body that came to rest over it), the contact and the attachment fought
+                    // every iteration, and the velocities of that fight, handed to the body,
+                    // spun it up to 400 rad/s.
+                    if (free[i] == 0f) continue;
                     float wi = w[i];
-                    if (wi == 0f) continue;
                     // A contact the Newton solver's step has met (added mass, with friction; see
                     // ImplicitNewtonSolver) is not projected again: pushing the vertex alone
                     // crushed a stiff slab under a dropped crate, pushing the body alone lifted a

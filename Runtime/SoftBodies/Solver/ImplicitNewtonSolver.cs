@@ -232,7 +232,11 @@ namespace Fulcrum.SoftBodies
             }
 
             for (int k = 0; k < _dofs; k++) _gradient[k] = -_rhs[k];
-            Factor();
+            if (!Factor())
+            {
+                PushBodies(body, x, h, coupling); // no step from a matrix that cannot be factored: keep x
+                return;
+            }
             Solve();
 
             // Backtracking (Armijo) on G: a full Newton step on a non-convex energy can overshoot
@@ -344,20 +348,32 @@ namespace Fulcrum.SoftBodies
         }
 
         // Band Cholesky in place (lower triangle); on a non-positive pivot the diagonal is shifted
-        // (Levenberg: 1e-10 of the largest diagonal, x4 per retry) and the factorisation restarts.
-        void Factor()
+        // (Levenberg: 1e-10 of the largest diagonal, x4 per retry, at most MaxShifts times) and
+        // the factorisation restarts. False when the matrix has no finite positive diagonal or
+        // is still not factored after the last shift (a non-finite entry): the step is skipped.
+        // Before, the retries were unbounded, and a matrix with a NaN (or a zero diagonal, which
+        // made every shift zero) hung the step for good (soft fuzz seed 3: a Newton beam at
+        // E 1e9 Pa, nu 0.4999).
+        bool Factor()
         {
             Array.Copy(_matrix, _saved, _matrix.Length);
             double largest = 0;
             for (int i = 0; i < _dofs; i++) largest = Math.Max(largest, At(i, i));
+            if (!(largest > 0) || double.IsInfinity(largest)) return false;
             double shift = 0;
-            while (!TryFactor())
+            for (int tries = 0; !TryFactor(); tries++)
             {
+                if (tries == MaxShifts) return false;
                 shift = shift == 0 ? 1e-10 * largest : 4 * shift;
                 Array.Copy(_saved, _matrix, _matrix.Length);
                 for (int i = 0; i < _dofs; i++) At(i, i) += shift;
             }
+            return true;
         }
+
+        // 1e-10 x 4^30 is 1e8 times the largest diagonal: the step is then a gradient step of
+        // that length scale, and a matrix that still fails has a non-finite entry.
+        const int MaxShifts = 30;
 
         bool TryFactor()
         {
