@@ -60,7 +60,8 @@ namespace Fulcrum.Tests.Scenes
             Assert.That(SceneFile.Save(doc), Does.Contain("\"thickness\": 0.0005").And.Contain("\"cells\": [1, 1]"));
         }
 
-        [TestCase("{ \"type\": \"sphere\", \"radius\": 0.5, \"cells\": 1 }", "$.softBodies[0].mesh.cells: must be in [2, 1024], got 1")]
+        [TestCase("{ \"type\": \"sphere\", \"radius\": 0.5, \"cells\": 1 }", "$.softBodies[0].mesh.cells: must be in [4, 1024], got 1")]
+        [TestCase("{ \"type\": \"capsule\", \"radius\": 0.5, \"halfHeight\": 0.2, \"cells\": 3 }", "$.softBodies[0].mesh.cells: must be in [4, 1024], got 3")]
         [TestCase("{ \"type\": \"sphere\", \"radius\": -0.5 }", "$.softBodies[0].mesh.radius: must be > 0, got -0.5")]
         [TestCase("{ \"type\": \"sphere\", \"radius\": 1, \"cells\": 200 }", "$.softBodies[0].mesh.cells: more than 1000000 cells (200^3)")]
         [TestCase("{ \"type\": \"capsule\", \"radius\": 0.5, \"halfHeight\": -1 }", "$.softBodies[0].mesh.halfHeight: must be >= 0, got -1")]

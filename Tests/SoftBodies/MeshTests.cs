@@ -108,6 +108,27 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(capsule.Bounds.Max.Y, Is.EqualTo(0.5f).Within(0.01f));
         }
 
+        // With fewer than four cells across, carving keeps no tet (no centroid lies a quarter
+        // cell inside the surface): the factories used to accept 2 and 3 and then fail with
+        // "mesh has no vertices", naming neither the parameter nor the limit. Four carves a mesh
+        // for any radius and segment length.
+        [TestCase(2)]
+        [TestCase(3)]
+        public void A_ball_or_capsule_of_too_few_cells_is_refused_by_its_cell_count(int cells)
+        {
+            var sphere = Assert.Throws<ArgumentException>(() => SoftMesh.Sphere(0.3f, cells))!;
+            var capsule = Assert.Throws<ArgumentException>(() => SoftMesh.Capsule(0.1f, 0.4f, cells))!;
+            Assert.That(sphere.ParamName, Is.EqualTo("mesh.cells"));
+            Assert.That(sphere.Message, Does.Contain(">= 4"));
+            Assert.That(capsule.ParamName, Is.EqualTo("mesh.cells"));
+            foreach (float radius in new[] { 0.01f, 0.3f, 5f })
+            {
+                Assert.That(SoftMesh.Sphere(radius, 4).TetrahedronCount, Is.GreaterThan(0));
+                Assert.That(SoftMesh.Capsule(radius, 3 * radius, 4).TetrahedronCount, Is.GreaterThan(0));
+                Assert.That(SoftMesh.Capsule(radius, 0, 4).TetrahedronCount, Is.GreaterThan(0));
+            }
+        }
+
         [Test]
         public void TetGen_files_are_read_with_either_index_base_and_orientation()
         {

@@ -426,12 +426,12 @@ namespace Fulcrum.Scenes
                         break;
                     case SceneSoftSphere sphere:
                         Positive(sphere.Radius, P(path, "radius"));
-                        GridCells(sphere.Cells, 2, cells, 3);
+                        GridCells(sphere.Cells, SceneSoftSphere.MinCells, cells, 3);
                         break;
                     case SceneSoftCapsule capsule:
                         Positive(capsule.Radius, P(path, "radius"));
                         NonNegative(capsule.HalfHeight, P(path, "halfHeight"));
-                        GridCells(capsule.Cells, 2, cells, 3);
+                        GridCells(capsule.Cells, SceneSoftSphere.MinCells, cells, 3);
                         break;
                     case SceneSoftBeam beam:
                         Positive(beam.Length, P(path, "length"));

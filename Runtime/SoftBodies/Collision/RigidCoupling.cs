@@ -172,18 +172,6 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>
-        /// The angle a dynamic body turns through, rad, per unit position impulse (kg m) along
-        /// <paramref name="direction"/> at <paramref name="point"/>: |I^-1 (r x n)|; 0 for static
-        /// and kinematic bodies.
-        /// </summary>
-        public float TurnPerImpulse(int slot, Vector3 point, Vector3 direction)
-        {
-            BodyStorage b = _bodies;
-            if (b.Type[slot] != BodyType.Dynamic) return 0f;
-            return (b.InverseInertiaWorld[slot] * Vector3.Cross(point - b.Center[slot], direction)).Length();
-        }
-
-        /// <summary>
         /// The inverse mass matrix of a dynamic body at <paramref name="point"/>: the change of
         /// that point's velocity per unit impulse there, M^-1 + [r]^T I^-1 [r]; zero for static
         /// and kinematic bodies.

@@ -203,7 +203,7 @@ namespace Fulcrum.SoftBodies
             ShapeStorage s = world.Shapes;
             BodyStorage b = world.Bodies;
             Vector3[] x = body.X;
-            float[] w = body.W;
+            float[] free = body.FreeW;
             float radius = body.CollisionRadius;
             int count = 0;
             for (int k = 0; k < _count; k++)
@@ -216,7 +216,7 @@ namespace Fulcrum.SoftBodies
                 float mu = Combine.Values(body.Friction, s.FrictionCombine[shape], s.Friction[shape], s.FrictionCombine[shape]);
                 for (int i = 0; i < x.Length && count < vertex.Length; i++)
                 {
-                    if (w[i] == 0f) continue;
+                    if (free[i] == 0f) continue; // pinned or attached: see Solve
                     if (!ShapeDistance.Query(geometry, pose, x[i], radius, out float distance, out Vector3 n)) continue;
                     vertex[count] = i;
                     normal[count] = n;

@@ -144,7 +144,8 @@ namespace Fulcrum.SoftBodies
         {
             Validate.Positive(radius, "mesh.radius");
             CheckCells(cellsAcross, "mesh.cells");
-            if (cellsAcross < 2) throw new ArgumentException($"mesh.cells must be >= 2 for a sphere, got {cellsAcross}.", "mesh.cells");
+            if (cellsAcross < Scenes.SceneSoftSphere.MinCells)
+                throw new ArgumentException($"mesh.cells must be >= {Scenes.SceneSoftSphere.MinCells} for a sphere (fewer carve no tet), got {cellsAcross}.", "mesh.cells");
             float keep = radius - KeepMargin * 2 * radius / cellsAcross;
             GridTetGenerator.Carve(new Vector3(2 * radius), cellsAcross, cellsAcross, cellsAcross,
                 p => p.LengthSquared() <= keep * keep,
@@ -169,7 +170,8 @@ namespace Fulcrum.SoftBodies
             Validate.Positive(radius, "mesh.radius");
             Validate.NonNegative(halfHeight, "mesh.halfHeight");
             CheckCells(cellsAcross, "mesh.cells");
-            if (cellsAcross < 2) throw new ArgumentException($"mesh.cells must be >= 2 for a capsule, got {cellsAcross}.", "mesh.cells");
+            if (cellsAcross < Scenes.SceneSoftSphere.MinCells)
+                throw new ArgumentException($"mesh.cells must be >= {Scenes.SceneSoftSphere.MinCells} for a capsule (fewer carve no tet), got {cellsAcross}.", "mesh.cells");
             float cell = 2 * radius / cellsAcross;
             int along = Math.Max(cellsAcross, (int)MathF.Ceiling((2 * halfHeight + 2 * radius) / cell));
             Vector3 size = new Vector3(2 * radius, along * cell, 2 * radius);

@@ -15,7 +15,7 @@ namespace Fulcrum.Scenes
         /// <summary><c>halfHeight</c>: half the length of the inner segment, m, &gt;= 0 (0 is a ball). Required.</summary>
         public float HalfHeight { get; set; }
 
-        /// <summary><c>cells</c>: grid cells across the diameter, in [2, 1024]. Default: 6.</summary>
+        /// <summary><c>cells</c>: grid cells across the diameter, in [4, 1024]. Default: 6.</summary>
         public int Cells { get; set; } = SceneSoftSphere.DefaultCells;
     }
 }

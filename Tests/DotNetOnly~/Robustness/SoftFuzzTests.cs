@@ -1,0 +1,80 @@
+using System.Collections.Generic;
+using Fulcrum.Runner;
+using NUnit.Framework;
+
+namespace Fulcrum.Tests.Robustness
+{
+    /// <summary>
+    /// Seeded hostile soft-body worlds (SoftFuzz: every mesh kind, both material models, E 1e3
+    /// to 1e10 Pa, nu up to 0.4999, both soft solvers, pins to the world and to rigid bodies,
+    /// rigid bodies of 0.01 kg to 10 t dropped or thrown onto them). Each world must be refused
+    /// by the API with an ArgumentException, or run without a body escaping further than its
+    /// speeds allow; divergence (a NaN, or a tet changing volume tenfold in a step) must be
+    /// reported, never hidden. The worlds that still diverge, gain mechanical energy or end
+    /// with an inverted element are counted and the counts held as ceilings, so they can only
+    /// go down; each failing world is listed one per line so it can be replayed
+    /// (<c>fulcrum fuzz --soft --count 1 --seed N</c>).
+    /// <para>
+    /// Known and not yet fixed (seeds 0-199): most divergences are bodies on the Newton solver
+    /// (24 of 29), chiefly nearly incompressible ones (nu 0.49-0.4999) striking the ground or a
+    /// body at several m/s: the contact pass after the Newton step pushes vertices out without
+    /// the tets behind them, and the next step releases that strain (a nu = 0.4999 box thrown
+    /// at the ground at 13 m/s: 100 J to 400 J in a step). XPBD runs the same worlds.
+    /// </para>
+    /// </summary>
+    public class SoftFuzzTests
+    {
+        // Measured with the fixes of the soft fuzz (attachment hand-over, attachment inertia
+        // scaling, attached vertices out of the contacts, bounded Newton factorisation) on
+        // seeds 0-99, 180 steps each. Before them the same seeds hung (seed 3: a Newton
+        // factorisation retrying forever on a NaN matrix) or turned rigid bodies to NaN within
+        // a step (7, 9, 24: cloths and beams pinned to light or spinning bodies).
+        [TestCase(0, 50, 9, 1, 0)]
+        [TestCase(50, 50, 9, 0, 1)]
+        public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
+        {
+            var failures = new List<string>();
+            var escapes = new List<string>();
+            var gains = new List<string>();
+            var inverted = new List<string>();
+            int refused = 0;
+            for (int seed = firstSeed; seed < firstSeed + count; seed++)
+            {
+                SoftFuzz.Outcome o = SoftFuzz.Run(seed, 180);
+                if (o.Refused) refused++;
+                if (o.Failure != null) failures.Add(o.Failure);
+                else if (o.Escape != null) escapes.Add(o.Escape);
+                else if (o.EnergyGain != null) gains.Add(o.EnergyGain);
+                else if (o.Inverted != null) inverted.Add(o.Inverted);
+            }
+            TestContext.Out.WriteLine($"{count} soft worlds: {refused} refused, {failures.Count} diverged (reported), {escapes.Count} escaped, {gains.Count} gained energy, {inverted.Count} ended inverted");
+            foreach (string f in failures) TestContext.Out.WriteLine("diverged: " + f);
+            foreach (string e in escapes) TestContext.Out.WriteLine("escaped: " + e);
+            foreach (string g in gains) TestContext.Out.WriteLine("energy: " + g);
+            foreach (string i in inverted) TestContext.Out.WriteLine("inverted: " + i);
+            Assert.That(escapes, Is.Empty);
+            Assert.That(failures.Count, Is.LessThanOrEqualTo(divergedMeasured));
+            Assert.That(gains.Count, Is.LessThanOrEqualTo(energyGainsMeasured));
+            Assert.That(inverted.Count, Is.LessThanOrEqualTo(invertedMeasured));
+        }
+
+        // The worlds that showed each mechanism, replayed: 7 (a 33 g body thrown at 28 m/s with
+        // a cloth pinned 5 m from its centre: the damping hand-over overshot and the body was
+        // NaN in step 0), 9 (a 533 kg body spinning at 16 rad/s with a 1 kg cloth pinned to it:
+        // the soft inertia scaled for the attached body made the cloth float and gave the body
+        // 1e8 J in two steps), 14 (a capsule at E 1e10 Pa pinned to a body, thrown: NaN in step 0).
+        [TestCase(7)]
+        [TestCase(9)]
+        [TestCase(14)]
+        public void A_soft_world_that_once_blew_up_runs_clean(int seed)
+        {
+            SoftFuzz.Outcome o = SoftFuzz.Run(seed, 180);
+            TestContext.Out.WriteLine($"seed {seed}: energy rise {o.MaxEnergyRise:G3} J of {o.EnergyAllowance:G3} J allowed, end min J {o.EndMinJ:F3}");
+            Assert.That(o.Refused, Is.False);
+            Assert.That(o.Failure, Is.Null);
+            Assert.That(o.Escape, Is.Null);
+            Assert.That(o.EnergyGain, Is.Null);
+            Assert.That(o.Inverted, Is.Null);
+        }
+    }
+}
