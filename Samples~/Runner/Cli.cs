@@ -45,8 +45,9 @@ public static class Cli
           fulcrum sweep SCENE.json [--solver pgs,tgs] [--iterations 1,2,4,8,16] [--substeps 1,2,4,8] [--out DIR]
                       [--seconds S | --steps N] [--dt X] [--threads N] [--soft-solver xpbd,newton]
           fulcrum check SCENE.json         validate only: every error with its JSON path
-          fulcrum fuzz [--count N] [--seed S] [--steps K]
-                                           run N seeded hostile worlds; list any that diverge or escape
+          fulcrum fuzz [--count N] [--seed S] [--steps K] [--soft] [--verbose]
+                                           run N seeded hostile worlds (--soft: soft-body worlds); list any that
+                                           diverge, escape, gain energy or end inverted
           fulcrum view [OUT.frec] [--port N] [--viewer DIR]
                                            serve the browser viewer and the recording on http://127.0.0.1:8765/
         """;

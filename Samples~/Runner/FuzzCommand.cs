@@ -3,7 +3,7 @@ using System.IO;
 namespace Fulcrum.Runner;
 
 /// <summary>
-/// <c>fulcrum fuzz [--count N] [--seed S] [--steps K] [--soft]</c>: runs N seeded hostile worlds
+/// <c>fulcrum fuzz [--count N] [--seed S] [--steps K] [--soft] [--verbose]</c>: runs N seeded hostile worlds
 /// (<see cref="WorldFuzz"/>, or with <c>--soft</c> soft-body worlds, <see cref="SoftFuzz"/>)
 /// from seed S, K steps each, and prints one line per world that diverged, flung a body
 /// farther than its speeds allow, gained more energy than its motors and correction passes
