@@ -36,7 +36,9 @@ namespace Fulcrum.SoftBodies
             // cloth pinned to a pole) or the two move freely together, and the scaling, which
             // also divides this body's weight, would make it float and hand the bodies its
             // scaled momentum: a 533 kg body spinning with a 1 kg cloth pinned to it gained
-            // 1e8 J within two steps, and again as soon as the cloth came near the ground.
+            // 1e8 J within two steps. (Counting a static shape within reach as a hold as well,
+            // for a body pinned on a ball that lies on the ground, brought that gain back as
+            // soon as the cloth came near the ground.)
             if (Attachments.Length > 0 && HasPinnedVertex())
                 heaviest = MathF.Max(heaviest, AttachmentSolver.HeaviestBody(World, Attachments));
             ScaleInertia(heaviest / (InertiaRatio * TotalMass));
