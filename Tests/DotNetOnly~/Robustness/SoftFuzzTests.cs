@@ -15,22 +15,20 @@ namespace Fulcrum.Tests.Robustness
     /// go down; each failing world is listed one per line so it can be replayed
     /// (<c>fulcrum fuzz --soft --count 1 --seed N</c>).
     /// <para>
-    /// Known and not yet fixed (seeds 0-199): most divergences are bodies on the Newton solver
-    /// (24 of 29), chiefly nearly incompressible ones (nu 0.49-0.4999) striking the ground or a
-    /// body at several m/s: the contact pass after the Newton step pushes vertices out without
-    /// the tets behind them, and the next step releases that strain (a nu = 0.4999 box thrown
-    /// at the ground at 13 m/s: 100 J to 400 J in a step). XPBD runs the same worlds.
+    /// Known and not yet fixed (seeds 0-199): 19 worlds diverge (reported), 14 of them with a
+    /// body on the Newton solver, nearly all with rigid bodies touching or pinned to it, where
+    /// the Newton energy guard stands aside (SoftBody.GuardEnergy; before it, 29 and 24).
     /// </para>
     /// </summary>
     public class SoftFuzzTests
     {
         // Measured with the fixes of the soft fuzz (attachment hand-over, attachment inertia
-        // scaling, attached vertices out of the contacts, bounded Newton factorisation) on
-        // seeds 0-99, 180 steps each. Before them the same seeds hung (seed 3: a Newton
+        // scaling, attached vertices out of the contacts, bounded Newton factorisation, the
+        // Newton energy guard) on seeds 0-99, 180 steps each. Before them the same seeds hung (seed 3: a Newton
         // factorisation retrying forever on a NaN matrix) or turned rigid bodies to NaN within
         // a step (7, 9, 24: cloths and beams pinned to light or spinning bodies).
-        [TestCase(0, 50, 9, 1, 0)]
-        [TestCase(50, 50, 9, 0, 1)]
+        [TestCase(0, 50, 5, 0, 1)]
+        [TestCase(50, 50, 8, 0, 1)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
             var failures = new List<string>();
