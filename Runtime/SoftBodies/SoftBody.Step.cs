@@ -164,8 +164,10 @@ namespace Fulcrum.SoftBodies
         /// </summary>
         internal void Substep(float h, RigidCoupling coupling, IParallelScheduler? pool)
         {
-            // Newton: the body's energy before the substep, for the guard after it.
-            double before = Solver == SoftSolver.Newton ? Energy() : 0;
+            // Newton with no dynamic body coupled: the body's energy before the substep, for the
+            // guard after it (not measured where the guard stands aside).
+            bool guard = Solver == SoftSolver.Newton && !MovedByBodies();
+            double before = guard ? Energy() : 0;
             Vector3 dv = World.Gravity * (GravityScale * h / _inertiaScale);
             float keep = LinearDamping > 0 ? 1f / (1f + LinearDamping * h) : 1f;
             for (int i = 0; i < X.Length; i++)
@@ -182,7 +184,7 @@ namespace Fulcrum.SoftBodies
             if (Solver == SoftSolver.Newton)
             {
                 SubstepNewton(h, coupling);
-                if (!MovedByBodies()) GuardEnergy(before);
+                if (guard) GuardEnergy(before);
                 return;
             }
             for (int iteration = 0; iteration < Iterations; iteration++)
