@@ -247,6 +247,69 @@ namespace Fulcrum.SoftBodies
             b.SleepTime[slot] = 0; // soft bodies never sleep: what they push stays awake with them (asleep it would lose its weight and be pushed up)
         }
 
+        // The tracked bodies' velocities when Snapshot was last called.
+        Vector3[] _savedLinear = Array.Empty<Vector3>();
+        Vector3[] _savedAngular = Array.Empty<Vector3>();
+
+        /// <summary>Remembers every tracked body's velocity, for <see cref="Changed"/>.</summary>
+        public void Snapshot()
+        {
+            if (_savedLinear.Length < _count)
+            {
+                _savedLinear = new Vector3[_slot.Length];
+                _savedAngular = new Vector3[_slot.Length];
+            }
+            BodyStorage b = _bodies;
+            for (int e = 0; e < _count; e++)
+            {
+                _savedLinear[e] = b.LinearVelocity[_slot[e]];
+                _savedAngular[e] = b.AngularVelocity[_slot[e]];
+            }
+        }
+
+        /// <summary>Tracked bodies (entries 0 .. Count - 1).</summary>
+        public int Count => _count;
+
+        /// <summary>The body slot of tracked entry <paramref name="e"/>.</summary>
+        public int SlotOf(int e) => _slot[e];
+
+        /// <summary>True when entry <paramref name="e"/> is a dynamic body whose velocity changed since <see cref="Snapshot"/>.</summary>
+        public bool Changed(int e)
+        {
+            int slot = _slot[e];
+            return _bodies.Type[slot] == BodyType.Dynamic
+                && (_bodies.LinearVelocity[slot] != _savedLinear[e] || _bodies.AngularVelocity[slot] != _savedAngular[e]);
+        }
+
+        /// <summary>
+        /// The kinetic and gravitational energy of the tracked dynamic bodies, J (gravity
+        /// <paramref name="gravity"/> times each body's gravity scale).
+        /// </summary>
+        public double Energy(Vector3 gravity)
+        {
+            BodyStorage b = _bodies;
+            double e = 0;
+            for (int k = 0; k < _count; k++)
+            {
+                int slot = _slot[k];
+                if (b.Type[slot] != BodyType.Dynamic) continue;
+                e += b.Mass[slot] * (0.5 * b.LinearVelocity[slot].LengthSquared() - b.GravityScale[slot] * Vector3.Dot(gravity, b.Center[slot]));
+                e += RotationalEnergy(slot);
+            }
+            return e;
+        }
+
+        /// <summary>1/2 w^T I w of a dynamic body (about its free rotation axes), J.</summary>
+        public double RotationalEnergy(int slot)
+        {
+            BodyStorage b = _bodies;
+            Vector3 w = b.AngularVelocity[slot];
+            if (w == Vector3.Zero) return 0;
+            Vector3 locked = Vector3.One - AxisLockMath.AngularMask(b.Locks[slot]);
+            if (!(b.InverseInertiaWorld[slot] + Mat3.Diagonal(locked)).TryInvert(out Mat3 inertia)) return 0;
+            return 0.5 * Vector3.Dot(w, inertia * w);
+        }
+
         void Grow(int capacity)
         {
             Array.Resize(ref _slot, capacity);

@@ -18,10 +18,8 @@ namespace Fulcrum.SoftBodies
             {
                 ref Attachment a = ref attachments[k];
                 int slot = a.BodySlot;
-                if (b.Generation[slot] != a.BodyGeneration || b.ActiveIndex[slot] < 0) continue;
                 float wv = w[a.Vertex];
-                if (wv == 0f) continue;
-                Vector3 anchor = b.Position[slot] + Vector3.Transform(a.LocalAnchor, b.Rotation[slot]);
+                if (wv == 0f || !Anchor(b, a, out Vector3 anchor)) continue;
                 Vector3 d = x[a.Vertex] - anchor;
                 float length = d.Length();
                 if (length < 1e-9f) continue;
@@ -30,6 +28,19 @@ namespace Fulcrum.SoftBodies
                 x[a.Vertex] -= wv * dl * n;
                 coupling.Push(slot, anchor, dl * n, h);
             }
+        }
+
+        /// <summary>Where attachment <paramref name="a"/>'s body holds its vertex now; false when the body was destroyed.</summary>
+        public static bool Anchor(BodyStorage b, in Attachment a, out Vector3 anchor)
+        {
+            int slot = a.BodySlot;
+            if (b.Generation[slot] != a.BodyGeneration || b.ActiveIndex[slot] < 0)
+            {
+                anchor = default;
+                return false;
+            }
+            anchor = b.Position[slot] + Vector3.Transform(a.LocalAnchor, b.Rotation[slot]);
+            return true;
         }
 
         /// <summary>
@@ -54,11 +65,12 @@ namespace Fulcrum.SoftBodies
                 if (b.Generation[slot] != a.BodyGeneration || b.ActiveIndex[slot] < 0 || b.Type[slot] != BodyType.Dynamic) continue;
                 int i = a.Vertex;
                 if (w[i] == 0f) continue;
-                Mat3 k3 = coupling.PointInverseMass(slot, x[i]) + Mat3.Diagonal(new Vector3(w[i]));
+                float wi = w[i];
+                Mat3 k3 = coupling.PointInverseMass(slot, x[i]) + Mat3.Diagonal(new Vector3(wi));
                 if (!k3.TryInvert(out Mat3 inverse)) continue;
                 Vector3 impulse = inverse * (v[i] - coupling.PointVelocity(slot, x[i]));
                 coupling.Kick(slot, x[i], impulse);
-                v[i] -= w[i] * impulse;
+                v[i] -= wi * impulse;
             }
         }
 
