@@ -15,10 +15,11 @@ namespace Fulcrum.Tests.Robustness
     /// go down; each failing world is listed one per line so it can be replayed
     /// (<c>fulcrum fuzz --soft --count 1 --seed N</c>).
     /// <para>
-    /// Known and not yet fixed (seeds 0-199): 8 worlds diverge (reported), 3 gain energy and 3
+    /// Known and not yet fixed (seeds 0-199): 7 worlds diverge (reported), 4 gain energy and 3
     /// end with an inverted element; seeds 200-399: 6, 2 and 2. Before the Newton solver took
-    /// attached rigid bodies into its step and its energy guard counted the rigid bodies it
-    /// moves, 19, 3 and 4, and 21, 2 and 1 (before the guard, 29 diverged of 0-199).
+    /// attached rigid bodies into its step, its energy guard counted the rigid bodies it moves
+    /// and a pinned body's step started from the substep's start, 19, 3 and 4, and 21, 2 and 1
+    /// (before the guard, 29 diverged of 0-199).
     /// </para>
     /// </summary>
     public class SoftFuzzTests
