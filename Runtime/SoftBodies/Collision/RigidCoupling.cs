@@ -299,11 +299,37 @@ namespace Fulcrum.SoftBodies
             return e;
         }
 
+        /// <summary>
+        /// The energy a substep of <paramref name="h"/> may show in the bodies whose velocity
+        /// changed since <see cref="Snapshot"/> without any being made, J: m |a h|^2 plus
+        /// (alpha h)^T I (alpha h) per body, with a and alpha the rigid solve's accelerations.
+        /// The bodies' velocity step (v += a h, x += v h) comes before a soft body's substep and
+        /// a contact's push after it, and that split alone shows up to 1/2 m |a h|^2 per substep
+        /// for a body resting on a soft body (the push lifts it by the step gravity lowered it,
+        /// at the velocity gravity gave it): counted as a gain, a 2000 kg plate resting on an
+        /// 8 kg cube had its motion scaled down every substep and settled 1.8 % off its closed-form
+        /// strain. Twice that is allowed.
+        /// </summary>
+        public double Slack(float h)
+        {
+            double slack = 0;
+            for (int e = 0; e < _count; e++)
+            {
+                if (!Changed(e)) continue;
+                int slot = _slot[e];
+                Vector3 dv = _acceleration[e] * h;
+                slack += _bodies.Mass[slot] * dv.LengthSquared() + 2 * RotationalEnergy(slot, _angularAcceleration[e] * h);
+            }
+            return slack;
+        }
+
         /// <summary>1/2 w^T I w of a dynamic body (about its free rotation axes), J.</summary>
-        public double RotationalEnergy(int slot)
+        public double RotationalEnergy(int slot) => RotationalEnergy(slot, _bodies.AngularVelocity[slot]);
+
+        // 1/2 w^T I w for angular velocity w of the body in slot (about its free rotation axes).
+        double RotationalEnergy(int slot, Vector3 w)
         {
             BodyStorage b = _bodies;
-            Vector3 w = b.AngularVelocity[slot];
             if (w == Vector3.Zero) return 0;
             Vector3 locked = Vector3.One - AxisLockMath.AngularMask(b.Locks[slot]);
             if (!(b.InverseInertiaWorld[slot] + Mat3.Diagonal(locked)).TryInvert(out Mat3 inertia)) return 0;
