@@ -264,41 +264,9 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        /// <summary>In-place dense Cholesky H = L L^T (lower triangle); false on a non-positive pivot.</summary>
-        bool Cholesky(int m)
-        {
-            for (int k = 0; k < m; k++)
-            {
-                double d = _h[k * m + k];
-                for (int s = 0; s < k; s++) d -= _h[k * m + s] * _h[k * m + s];
-                if (!(d > 0)) return false;
-                d = Math.Sqrt(d);
-                _h[k * m + k] = d;
-                for (int i = k + 1; i < m; i++)
-                {
-                    double v = _h[i * m + k];
-                    for (int s = 0; s < k; s++) v -= _h[i * m + s] * _h[k * m + s];
-                    _h[i * m + k] = v / d;
-                }
-            }
-            return true;
-        }
+        bool Cholesky(int m) => DenseCholesky.Factor(_h, m);
 
-        void SolveFactored(int m, double[] b)
-        {
-            for (int i = 0; i < m; i++)
-            {
-                double v = b[i];
-                for (int s = 0; s < i; s++) v -= _h[i * m + s] * b[s];
-                b[i] = v / _h[i * m + i];
-            }
-            for (int i = m - 1; i >= 0; i--)
-            {
-                double v = b[i];
-                for (int s = i + 1; s < m; s++) v -= _h[s * m + i] * b[s];
-                b[i] = v / _h[i * m + i];
-            }
-        }
+        void SolveFactored(int m, double[] b) => DenseCholesky.Solve(_h, m, b);
 
         static void Inverse(double[] a, double det, double[] inv)
         {

@@ -343,47 +343,16 @@ namespace Fulcrum.SoftBodies
             for (int i = 0; i < n; i++) largest = Math.Max(largest, _schur[i * n + i]);
             if (!(largest > 0) || double.IsInfinity(largest)) return false;
             double shift = 0;
-            for (int tries = 0; !DenseCholesky(_schur, n); tries++)
+            for (int tries = 0; !DenseCholesky.Factor(_schur, n); tries++)
             {
                 if (tries == MaxShifts) return false;
                 shift = shift == 0 ? 1e-8 * largest : 4 * shift;
                 Array.Copy(_schurSaved, _schur, n * n);
                 for (int i = 0; i < n; i++) _schur[i * n + i] += shift;
             }
-            // L y = b, then L^T q = y (L in the lower triangle).
-            for (int i = 0; i < n; i++)
-            {
-                double v = _schurRhs[i];
-                for (int j = 0; j < i; j++) v -= _schur[i * n + j] * _q[j];
-                _q[i] = v / _schur[i * n + i];
-            }
-            for (int i = n - 1; i >= 0; i--)
-            {
-                double v = _q[i];
-                for (int j = i + 1; j < n; j++) v -= _schur[j * n + i] * _q[j];
-                _q[i] = v / _schur[i * n + i];
-            }
+            Array.Copy(_schurRhs, _q, n);
+            DenseCholesky.Solve(_schur, n, _q);
             for (int i = 0; i < n; i++) if (!double.IsFinite(_q[i])) return false;
-            return true;
-        }
-
-        // Dense Cholesky in place (lower triangle); false on a non-positive pivot.
-        static bool DenseCholesky(double[] a, int n)
-        {
-            for (int k = 0; k < n; k++)
-            {
-                double d = a[k * n + k];
-                for (int s = 0; s < k; s++) d -= a[k * n + s] * a[k * n + s];
-                if (!(d > 0)) return false;
-                d = Math.Sqrt(d);
-                a[k * n + k] = d;
-                for (int i = k + 1; i < n; i++)
-                {
-                    double v = a[i * n + k];
-                    for (int s = 0; s < k; s++) v -= a[i * n + s] * a[k * n + s];
-                    a[i * n + k] = v / d;
-                }
-            }
             return true;
         }
 
