@@ -198,7 +198,9 @@ namespace Fulcrum.Tests.SoftBodies
             float volume = cube.ComputeStats().VolumeRatio;
             TestContext.Out.WriteLine($"Newton nu {nu}, thrown at {speed} m/s: motion's energy {start:F2} J at the start, at most {most:F2} J; min J {minJ:F3}, volume at the end {volume:F4}, diverged {SoftBodySystem.Of(w)!.DivergenceCount}");
             Assert.That(SoftBodySystem.Of(w)!.DivergenceCount, Is.EqualTo(0));
-            Assert.That(minJ, Is.GreaterThan(0.1f), "no element inverts");
+            // 0.15-0.23 before overlaps with immovable shapes were springs inside the Newton step
+            // (the contact pass after it crushed the struck corner); 0.43-0.60 since.
+            Assert.That(minJ, Is.GreaterThan(0.35f), "the struck corner is not crushed");
             Assert.That(volume, Is.EqualTo(1f).Within(0.01f));
             Assert.That(most, Is.LessThanOrEqualTo(start + 1e-3 * Math.Abs(start)), "no energy from the contacts");
         }

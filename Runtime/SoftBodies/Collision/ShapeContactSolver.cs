@@ -289,6 +289,32 @@ namespace Fulcrum.SoftBodies
         /// the whole tangential displacement of the substep so far, bounded by mu times the
         /// normal corrections the vertex had in the substep less the friction already spent.
         /// </summary>
+        /// <summary>
+        /// The deepest overlap of point <paramref name="x"/> (a vertex with the body's collision
+        /// radius) with a static or kinematic candidate shape: the outward normal and the point
+        /// on the surface offset by the radius. False when it overlaps none.
+        /// </summary>
+        public bool ImmovableOverlap(World world, SoftBody body, Vector3 x, out Vector3 normal, out Vector3 surface)
+        {
+            ShapeStorage s = world.Shapes;
+            BodyStorage b = world.Bodies;
+            float radius = body.CollisionRadius, deepest = 0f;
+            normal = default;
+            surface = default;
+            for (int k = 0; k < _count; k++)
+            {
+                int shape = _shapes[k];
+                if (b.Type[s.Body[shape]] == BodyType.Dynamic) continue;
+                if (!ShapeDistance.Query(s.Geometry[shape], world.ShapeWorldPose(shape), x, radius, out float distance, out Vector3 n)) continue;
+                float depth = radius - distance;
+                if (!(depth > deepest)) continue;
+                deepest = depth;
+                normal = n;
+                surface = x + depth * n;
+            }
+            return deepest > 0f;
+        }
+
         public void Solve(World world, SoftBody body, float h, RigidCoupling coupling, bool normal)
         {
             ShapeStorage s = world.Shapes;

@@ -15,8 +15,8 @@ namespace Fulcrum.Tests.Robustness
     /// go down; each failing world is listed one per line so it can be replayed
     /// (<c>fulcrum fuzz --soft --count 1 --seed N</c>).
     /// <para>
-    /// Known and not yet fixed (seeds 0-199): 7 worlds diverge (reported), 4 gain energy and 1
-    /// ends with an inverted element; seeds 200-399: 6, 2 and 2. Before the Newton solver took
+    /// Known and not yet fixed (seeds 0-199): 5 worlds diverge (reported), 4 gain energy and 1
+    /// ends with an inverted element; seeds 200-399: 5, 3 and 2. Before the Newton solver took
     /// attached rigid bodies into its step, its energy guard counted the rigid bodies it moves
     /// and a pinned body's step started from the substep's start, 19, 3 and 4, and 21, 2 and 1
     /// (before the guard, 29 diverged of 0-199).
@@ -29,7 +29,7 @@ namespace Fulcrum.Tests.Robustness
         // Newton energy guard, attached bodies in the Newton step) on seeds 0-99, 180 steps each. Before them the same seeds hung (seed 3: a Newton
         // factorisation retrying forever on a NaN matrix) or turned rigid bodies to NaN within
         // a step (7, 9, 24: cloths and beams pinned to light or spinning bodies).
-        [TestCase(0, 50, 2, 0, 0)]
+        [TestCase(0, 50, 0, 0, 0)]
         [TestCase(50, 50, 3, 0, 0)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
