@@ -12,7 +12,6 @@ namespace Fulcrum.SoftBodies
         // Inertia scaling against much heavier rigid bodies (see ScaleInertia): the factor this
         // step, and the unscaled masses to put back at its end.
         float _inertiaScale = 1f;
-
         float[]? _baseW, _baseFreeW, _baseM;
 
         /// <summary>

@@ -129,16 +129,6 @@ namespace Fulcrum.SoftBodies
             }
         }
 
-        /// <summary>Whether a shape of a dynamic body was gathered for this step.</summary>
-        public bool HasDynamicCandidate(World world)
-        {
-            BodyStorage b = world.Bodies;
-            ShapeStorage s = world.Shapes;
-            for (int k = 0; k < _count; k++)
-                if (b.Type[s.Body[_shapes[k]]] == BodyType.Dynamic) return true;
-            return false;
-        }
-
         /// <summary>
         /// The largest mass of a dynamic body among the gathered shapes' owners that rests on
         /// this body in this step, kg (0 for none): some vertex may come within reach of the

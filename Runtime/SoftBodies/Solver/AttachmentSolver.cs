@@ -65,12 +65,11 @@ namespace Fulcrum.SoftBodies
                 if (b.Generation[slot] != a.BodyGeneration || b.ActiveIndex[slot] < 0 || b.Type[slot] != BodyType.Dynamic) continue;
                 int i = a.Vertex;
                 if (w[i] == 0f) continue;
-                float wi = w[i];
-                Mat3 k3 = coupling.PointInverseMass(slot, x[i]) + Mat3.Diagonal(new Vector3(wi));
+                Mat3 k3 = coupling.PointInverseMass(slot, x[i]) + Mat3.Diagonal(new Vector3(w[i]));
                 if (!k3.TryInvert(out Mat3 inverse)) continue;
                 Vector3 impulse = inverse * (v[i] - coupling.PointVelocity(slot, x[i]));
                 coupling.Kick(slot, x[i], impulse);
-                v[i] -= wi * impulse;
+                v[i] -= w[i] * impulse;
             }
         }
 

@@ -177,20 +177,14 @@ namespace Fulcrum.SoftBodies
                 }
             }
 
-            // Vertices an immovable shape (static or kinematic) pushed in this substep or the last
-            // are held along the push normal by
-            // a stiff penalty k n n^T with no force at the current position: the Newton step
-            // cannot drive them back into the shape, while the contact pass after it pushes out
-            // what is still inside. Without it the step undid the contact every substep and a
-            // nearly incompressible jelly (nu = 0.4999) inverted at impact.
-            // And a vertex inside an immovable shape where the step starts is held by a one-sided
-            // spring of the same stiffness to the shape's surface (plane at the deepest overlap),
-            // counted in G: the step pushes it out and spreads the strain over the body, where the
+            // A vertex inside an immovable shape where the step starts is held by a one-sided
+            // spring to the shape's surface (the plane at the deepest overlap; the stiffness of
+            // the held vertices below, from the diagonal before their penalty is added), counted
+            // in G: the step pushes it out and spreads the strain over the body, where the
             // contact pass after the step pushed it out alone and stored the strain in the few
             // tets behind it (a nu 0.49-0.4999 cube thrown at the ground at 3-10 m/s: min J
             // 0.15-0.23; with the spring 0.43-0.60; a 3.5 kg beam at E 2e9 landing at 5.4 m/s:
             // 5e4 J of strain stored in one substep, 3.4e3 J with it, soft fuzz seed 564).
-            _overlaps = 0;
             if (body.CollideWithShapes)
                 for (int i = 0; i < _n; i++)
                 {
@@ -208,6 +202,13 @@ namespace Fulcrum.SoftBodies
                     _overlapPoint[_overlaps] = surface;
                     _overlapStiffness[_overlaps++] = k;
                 }
+
+            // Vertices an immovable shape (static or kinematic) pushed in this substep or the last
+            // are held along the push normal by
+            // a stiff penalty k n n^T with no force at the current position: the Newton step
+            // cannot drive them back into the shape, while the contact pass after it pushes out
+            // what is still inside. Without it the step undid the contact every substep and a
+            // nearly incompressible jelly (nu = 0.4999) inverted at impact.
             if (body.CollideWithShapes)
                 for (int i = 0; i < _n; i++)
                 {
