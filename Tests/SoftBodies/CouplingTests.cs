@@ -121,12 +121,7 @@ namespace Fulcrum.Tests.SoftBodies
         public void A_cloth_pinned_far_from_a_thrown_body_never_gains_energy(float bodyMass)
         {
             World world = SoftBodyScenes.ZeroGravityWorld();
-            BodyDef bodyDef = BodyDef.Dynamic(new Vector3(-3.5f, 0, 0));
-            bodyDef.Mass = bodyMass;
-            bodyDef.LinearVelocity = new Vector3(5, 8, 3);
-            bodyDef.AngularVelocity = new Vector3(0.9f, 0.4f, -0.9f);
-            BodyHandle body = world.CreateBody(bodyDef);
-            world.AddShape(body, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.05f))));
+            BodyHandle body = ThrownBox(world, new Vector3(-3.5f, 0, 0), bodyMass, new Vector3(0.9f, 0.4f, -0.9f));
             var material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 2e6f, 0.3f, 20f);
             SoftBodyDef def = SoftBodyDef.Of(SoftMesh.Cloth(1, 1, 10, 10), material, Vector3.Zero);
             def.Pins = new[] { SoftPin.ToBody(new Vector3(-0.5f, -1, -0.5f), new Vector3(-0.5f, 1, 0.5f), body) };
@@ -162,12 +157,7 @@ namespace Fulcrum.Tests.SoftBodies
         public void A_newton_box_pinned_far_from_a_thrown_body_keeps_momentum_and_gains_no_energy(float bodyMass, float youngsModulus)
         {
             World world = SoftBodyScenes.ZeroGravityWorld();
-            BodyDef bodyDef = BodyDef.Dynamic(new Vector3(-3.1f, 0, 0));
-            bodyDef.Mass = bodyMass;
-            bodyDef.LinearVelocity = new Vector3(5, 8, 3);
-            bodyDef.AngularVelocity = new Vector3(0.9f, 2.4f, -1.9f);
-            BodyHandle body = world.CreateBody(bodyDef);
-            world.AddShape(body, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.05f))));
+            BodyHandle body = ThrownBox(world, new Vector3(-3.1f, 0, 0), bodyMass, new Vector3(0.9f, 2.4f, -1.9f));
             var material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngsModulus, 0.3f, 50f);
             SoftBodyDef def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.2f), 2, 2, 2), material, Vector3.Zero);
             def.Solver = SoftSolver.Newton;
@@ -191,6 +181,18 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(most, Is.LessThanOrEqualTo(start * 1.001), "no energy from the coupling");
             Assert.That(drift.Length(), Is.LessThan(1e-3f * momentum.Length()), "momentum kept");
             Assert.That(lowestJ, Is.GreaterThan(0.5f), "the box is whipped, not crushed");
+        }
+
+        // A 0.1 m box of the given mass at the given place, thrown at (5, 8, 3) m/s and spinning.
+        static BodyHandle ThrownBox(World world, Vector3 at, float mass, Vector3 angularVelocity)
+        {
+            BodyDef bodyDef = BodyDef.Dynamic(at);
+            bodyDef.Mass = mass;
+            bodyDef.LinearVelocity = new Vector3(5, 8, 3);
+            bodyDef.AngularVelocity = angularVelocity;
+            BodyHandle body = world.CreateBody(bodyDef);
+            world.AddShape(body, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.05f))));
+            return body;
         }
 
         // The linear momentum of a rigid body and a soft body, kg m/s.

@@ -152,7 +152,7 @@ namespace Fulcrum.SoftBodies
             int count = 0;
             for (int k = 0; k < attachments.Length; k++)
             {
-                if (!Holds(body, k)) continue;
+                if (!Holds(k)) continue;
                 from += body.XPrev[attachments[k].Vertex];
                 to += _anchor[k];
                 count++;
@@ -162,7 +162,7 @@ namespace Fulcrum.SoftBodies
             to /= count;
             Mat3 covariance = default;
             for (int k = 0; k < attachments.Length; k++)
-                if (Holds(body, k)) covariance += Mat3.Outer(_anchor[k] - to, body.XPrev[attachments[k].Vertex] - from);
+                if (Holds(k)) covariance += Mat3.Outer(_anchor[k] - to, body.XPrev[attachments[k].Vertex] - from);
             Quaternion turn = BestRotation(covariance);
             double stay = Energy(body, x, y, invH2);
             Array.Copy(x, _trial, _n);
@@ -172,7 +172,7 @@ namespace Fulcrum.SoftBodies
         }
 
         // Whether attachment k put its vertex at its anchor in this step.
-        bool Holds(SoftBody body, int k) => _bodyOf[k] != Loose;
+        bool Holds(int k) => _bodyOf[k] != Loose;
 
         /// <summary>
         /// The rotation closest to the covariance A = sum (q - q0)(p - p0)^T (the rotational
@@ -365,7 +365,7 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>Moves the carried vertices by fraction <paramref name="step"/> of q: x_i = c + s dc + R(s dtheta)(x_i - c).</summary>
-        void CarryTrial(SoftBody body, Vector3[] x, float step)
+        void CarryTrial(Vector3[] x, float step)
         {
             for (int i = 0; i < _n; i++)
             {
@@ -390,7 +390,7 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>The largest move of a carried vertex at the full step, m.</summary>
-        double LargestCarried(SoftBody body)
+        double LargestCarried()
         {
             double largest = 0;
             for (int i = 0; i < _n; i++)

@@ -308,7 +308,7 @@ namespace Fulcrum.SoftBodies
                 largest = Math.Max(largest, _rhs[r] * _rhs[r] + _rhs[r + 1] * _rhs[r + 1] + _rhs[r + 2] * _rhs[r + 2]);
             }
             largest = Math.Sqrt(largest);
-            if (_bodyCount > 0) largest = Math.Max(largest, LargestCarried(body));
+            if (_bodyCount > 0) largest = Math.Max(largest, LargestCarried());
             double step = largest > _reach ? _reach / largest : 1, taken = 0;
             for (int tries = 0; tries < 12; tries++, step *= 0.5)
             {
@@ -317,7 +317,7 @@ namespace Fulcrum.SoftBodies
                     int r = 3 * _order[i];
                     _trial[i] = _fixed[i] ? x[i] : x[i] + (float)step * new Vector3((float)_rhs[r], (float)_rhs[r + 1], (float)_rhs[r + 2]);
                 }
-                if (_bodyCount > 0) CarryTrial(body, x, (float)step);
+                if (_bodyCount > 0) CarryTrial(x, (float)step);
                 double g = Energy(body, _trial, y, invH2) + (_bodyCount > 0 ? BodyEnergy(step, invH2) : 0);
                 if (g <= g0 + 1e-4 * step * slope)
                 {
