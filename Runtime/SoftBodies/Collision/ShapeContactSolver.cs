@@ -274,12 +274,6 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>
-        /// One pass over the gathered shapes for every free vertex, in a fixed order: the normal
-        /// constraint when <paramref name="normal"/> (before the elastic pass), then friction on
-        /// the whole tangential displacement of the substep so far, bounded by mu times the
-        /// normal corrections the vertex had in the substep less the friction already spent.
-        /// </summary>
-        /// <summary>
         /// The deepest overlap of point <paramref name="x"/> (a vertex with the body's collision
         /// radius) with a static or kinematic candidate shape: the outward normal and the point
         /// on the surface offset by the radius. False when it overlaps none.
@@ -305,6 +299,12 @@ namespace Fulcrum.SoftBodies
             return deepest > 0f;
         }
 
+        /// <summary>
+        /// One pass over the gathered shapes for every free vertex, in a fixed order: the normal
+        /// constraint when <paramref name="normal"/> (before the elastic pass), then friction on
+        /// the whole tangential displacement of the substep so far, bounded by mu times the
+        /// normal corrections the vertex had in the substep less the friction already spent.
+        /// </summary>
         public void Solve(World world, SoftBody body, float h, RigidCoupling coupling, bool normal)
         {
             ShapeStorage s = world.Shapes;
