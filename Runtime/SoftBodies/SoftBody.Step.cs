@@ -333,12 +333,14 @@ namespace Fulcrum.SoftBodies
             // deformation velocity, the body's motion relative to the common mean, and the rigid
             // bodies' motion; the spin only when they cannot cover the excess.
             RigidFit.Fit(X, V, M, W, X.Length, out Vector3 centre, out Vector3 own, out Vector3 spin);
-            double internalKinetic = 0, softMass = 0;
+            double internalKinetic = 0, softMass = 0, spinKinetic = 0;
             for (int i = 0; i < X.Length; i++)
             {
                 if (W[i] == 0f) continue;
+                Vector3 turning = Vector3.Cross(spin, X[i] - centre);
                 softMass += M[i];
-                internalKinetic += 0.5 * M[i] * (V[i] - own - Vector3.Cross(spin, X[i] - centre)).LengthSquared();
+                internalKinetic += 0.5 * M[i] * (V[i] - own - turning).LengthSquared();
+                spinKinetic += 0.5 * M[i] * turning.LengthSquared();
             }
             internalKinetic += 0.5 * softMass * (own - mean).LengthSquared();
             for (int e = 0; e < coupling.Count; e++)
@@ -347,9 +349,6 @@ namespace Fulcrum.SoftBodies
                 int slot = coupling.SlotOf(e);
                 internalKinetic += 0.5 * b.Mass[slot] * (b.LinearVelocity[slot] - mean).LengthSquared() + coupling.RotationalEnergy(slot);
             }
-            double spinKinetic = 0;
-            for (int i = 0; i < X.Length; i++)
-                if (W[i] != 0f) spinKinetic += 0.5 * M[i] * Vector3.Cross(spin, X[i] - centre).LengthSquared();
             if (!(internalKinetic + spinKinetic > 0)) return;
             float scale = internalKinetic > 0 ? (float)Math.Sqrt(Math.Max(0, 1 - excess / internalKinetic)) : 0f;
             float spinScale = excess > internalKinetic && spinKinetic > 0 ? (float)Math.Sqrt(Math.Max(0, 1 - (excess - internalKinetic) / spinKinetic)) : 1f;

@@ -18,7 +18,7 @@ namespace Fulcrum.SoftBodies
         Vector3 _rigidShift, _rigidCentre;
         Quaternion _rigidTurn = Quaternion.Identity;
 
-        /// <summary>Fits the rigid motion from <paramref name="start"/> to <paramref name="x"/> (see the class summary).</summary>
+        /// <summary>Fits the rigid motion from <paramref name="start"/> to <paramref name="x"/> (see the class summary); leaves x - start in _lag.</summary>
         void FitRigidMotion(SoftBody body, Vector3[] x, Vector3[] start)
         {
             for (int i = 0; i < _n; i++) _lag[i] = x[i] - start[i];

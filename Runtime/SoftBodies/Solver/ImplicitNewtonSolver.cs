@@ -122,8 +122,8 @@ namespace Fulcrum.SoftBodies
             double damping = body.DampingTime > 0f ? body.DampingTime / (double)h : 0.0;
             if (damping > 0)
             {
-                FitRigidMotion(body, x, xStart);
-                for (int i = 0; i < _n; i++) _lag[i] = x[i] - xStart[i] - RigidDisplacement(xStart[i]);
+                FitRigidMotion(body, x, xStart); // leaves x - x_n in _lag
+                for (int i = 0; i < _n; i++) _lag[i] -= RigidDisplacement(xStart[i]);
             }
             for (int i = 0; i < _n; i++)
             {

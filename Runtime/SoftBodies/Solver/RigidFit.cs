@@ -16,8 +16,8 @@ namespace Fulcrum.SoftBodies
         /// <summary>
         /// Fits <paramref name="motion"/> at points <paramref name="at"/> of masses
         /// <paramref name="mass"/>, counting only points with a non-zero <paramref name="weight"/>
-        /// (all of them when it is null). False (and zeros) when they have no mass, or the
-        /// rotation is not finite (points on a line).
+        /// (all of them when it is null). False when they have no mass (everything zero), or when
+        /// the rotation is not finite (points on a line: the centre and mean are set, omega is zero).
         /// </summary>
         public static bool Fit(Vector3[] at, Vector3[] motion, float[] mass, float[]? weight, int n,
             out Vector3 centre, out Vector3 mean, out Vector3 omega)
