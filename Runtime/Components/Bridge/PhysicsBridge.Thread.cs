@@ -21,18 +21,13 @@ namespace Fulcrum.Components
         int[] _snapPrevGen = new int[16], _snapCurGen = new int[16], _snapBackGen = new int[16];
         long _publishTicks;
         long _stepsPublished;
-        BridgeContact[] _outbox = new BridgeContact[64];
-        int _outboxCount;
-        BridgeContactPoint[] _outboxPoints = new BridgeContactPoint[64];
-        int _outboxPointCount;
+        BridgeContactBatch _outbox = new BridgeContactBatch();
         Pose[] _sharedInput = new Pose[16];
         bool[] _sharedInputSet = new bool[16];
 
         // Game thread only.
         long _stepsDelivered;
-        BridgeContact[] _inbox = new BridgeContact[64];
-        int _inboxCount;
-        BridgeContactPoint[] _inboxPoints = new BridgeContactPoint[64];
+        BridgeContactBatch _inbox = new BridgeContactBatch(); // empty between deliveries
         Pose[] _gPrev = new Pose[16], _gCur = new Pose[16];
         int[] _gPrevGen = new int[16], _gCurGen = new int[16];
 
@@ -106,21 +101,10 @@ namespace Fulcrum.Components
                 Swap(ref _snapPrevGen, ref _snapCurGen);
                 Swap(ref _snapCurGen, ref _snapBackGen);
                 _publishTicks = Stopwatch.GetTimestamp();
-                if (_outboxCount + _wEventCount > _outbox.Length) Array.Resize(ref _outbox, Math.Max(_outbox.Length * 2, _outboxCount + _wEventCount));
-                if (_outboxPointCount + _wPointCount > _outboxPoints.Length) Array.Resize(ref _outboxPoints, Math.Max(_outboxPoints.Length * 2, _outboxPointCount + _wPointCount));
-                for (int k = 0; k < _wEventCount; k++)
-                {
-                    _outbox[_outboxCount + k] = _wEvents[k];
-                    _outbox[_outboxCount + k].FirstPoint += _outboxPointCount; // rebased into the outbox's point buffer
-                }
-                Array.Copy(_wPoints, 0, _outboxPoints, _outboxPointCount, _wPointCount);
-                _outboxCount += _wEventCount;
-                _outboxPointCount += _wPointCount;
+                _outbox.Append(_wEvents);
                 Interlocked.Increment(ref _stepsPublished);
             }
-            Array.Clear(_wEvents, 0, _wEventCount);
-            _wEventCount = 0;
-            _wPointCount = 0;
+            _wEvents.Clear();
             TakeRecordStop();
         }
 
@@ -193,21 +177,12 @@ namespace Fulcrum.Components
             long steps;
             lock (_sync)
             {
-                BridgeContact[] box = _outbox;
-                _outbox = _inbox;
-                _inbox = box;
-                _inboxCount = _outboxCount;
-                _outboxCount = 0;
-                BridgeContactPoint[] points = _outboxPoints;
-                _outboxPoints = _inboxPoints;
-                _inboxPoints = points;
-                _outboxPointCount = 0;
+                Swap(ref _outbox, ref _inbox); // the thread goes on with the emptied inbox
                 steps = _stepsPublished - _stepsDelivered;
                 _stepsDelivered = _stepsPublished;
             }
-            _deliveringPoints = _inboxPoints;
-            Deliver(_inbox, _inboxCount);
-            _inboxCount = 0;
+            Deliver(_inbox);
+            _inbox.Clear();
             return (int)steps;
         }
 

@@ -23,10 +23,7 @@ namespace Fulcrum.Components
         int[] _releaseAfterStep = new int[16];
         BodyHandle[] _releaseBody = new BodyHandle[16]; // the destroyed body of each, whose body slot may be reused at once
         int _releaseAfterStepCount;
-        BridgeContact[] _wEvents = new BridgeContact[64];
-        int _wEventCount;
-        BridgeContactPoint[] _wPoints = new BridgeContactPoint[64];
-        int _wPointCount;
+        readonly BridgeContactBatch _wEvents = new BridgeContactBatch();
         ContactEvent[] _injected = new ContactEvent[16];
         int _injectedCount;
 
@@ -198,8 +195,7 @@ namespace Fulcrum.Components
         {
             int a = ProxySlotOf(e.BodyA), b = ProxySlotOf(e.BodyB);
             if (a < 0 && b < 0) return;
-            if (_wEventCount == _wEvents.Length) Array.Resize(ref _wEvents, _wEvents.Length * 2);
-            ref BridgeContact c = ref _wEvents[_wEventCount++];
+            ref BridgeContact c = ref _wEvents.AddContact();
             c.Kind = e.Kind;
             c.IsTrigger = e.IsSensor;
             c.ProxyA = a < 0 ? default : new ProxyHandle(a, _wGeneration[a], _world.Id);
@@ -213,7 +209,7 @@ namespace Fulcrum.Components
             c.RelativeVelocity = e.RelativeVelocity;
             c.StepIndex = _world.StepIndex;
             c.Time = _world.Time;
-            c.FirstPoint = _wPointCount;
+            c.FirstPoint = _wEvents.PointCount;
             c.StoredPoints = e.Kind == ContactEventKind.End || e.IsSensor ? 0 : StorePoints(e);
             if (Haptics != null && !e.IsSensor && ((a >= 0 && _wHaptics[a]) || (b >= 0 && _wHaptics[b])))
             {
@@ -246,8 +242,7 @@ namespace Fulcrum.Components
                 for (int i = 0; i < mf.PointCount; i++)
                 {
                     ref Fulcrum.Collision.ContactPoint p = ref ContactManifold.Point(ref mf, i);
-                    if (_wPointCount == _wPoints.Length) Array.Resize(ref _wPoints, _wPoints.Length * 2);
-                    _wPoints[_wPointCount++] = new BridgeContactPoint { Position = p.Position, Normal = mf.Normal, Separation = p.Separation, NormalImpulse = p.AppliedImpulse };
+                    _wEvents.AddPoint(new BridgeContactPoint { Position = p.Position, Normal = mf.Normal, Separation = p.Separation, NormalImpulse = p.AppliedImpulse });
                     n++;
                 }
             }

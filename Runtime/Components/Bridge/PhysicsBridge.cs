@@ -284,10 +284,8 @@ namespace Fulcrum.Components
             for (int k = 0; k < steps; k++)
             {
                 StepWorld(_stepper.FixedDt, k, steps);
-                _deliveringPoints = _wPoints;
-                Deliver(_wEvents, _wEventCount);
-                _wEventCount = 0;
-                _wPointCount = 0;
+                Deliver(_wEvents);
+                _wEvents.Clear();
                 ApplyCommands(_commands);
             }
             return steps;
@@ -394,8 +392,11 @@ namespace Fulcrum.Components
         // Delivers resolved events to the listener; the game may register, unregister and push
         // forces meanwhile (deferred). Begin and persist events of entities the game removed
         // earlier in the batch are skipped; end events always go out.
-        void Deliver(BridgeContact[] events, int count)
+        void Deliver(BridgeContactBatch batch)
         {
+            _deliveringPoints = batch.Points;
+            BridgeContact[] events = batch.Contacts;
+            int count = batch.ContactCount;
             if (_listener == null || count == 0) return;
             _dispatching = true;
             try
