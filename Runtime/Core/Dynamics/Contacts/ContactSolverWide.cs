@@ -124,21 +124,30 @@ namespace Fulcrum.Dynamics
             friction.AddScaled(t2, f2);
             WideVector3 linear = WideVector3.Scale(w.Normal, l0 + l1 + l2 + l3);
             linear.Add(friction);
-            // The friction rows' angular parts are c x t: their impulse's moment is c x (f1 t1 + f2 t2).
-            WideVector3 angularA = WideVector3.Cross(w.CentroidA, friction);
-            angularA.AddScaled(w.P0.AngularA, l0);
-            angularA.AddScaled(w.P1.AngularA, l1);
-            angularA.AddScaled(w.P2.AngularA, l2);
-            angularA.AddScaled(w.P3.AngularA, l3);
-            angularA.AddScaled(w.Normal, w.TwistImpulse);
-            WideVector3 angularB = WideVector3.Cross(w.CentroidB, friction);
-            angularB.AddScaled(w.P0.AngularB, l0);
-            angularB.AddScaled(w.P1.AngularB, l1);
-            angularB.AddScaled(w.P2.AngularB, l2);
-            angularB.AddScaled(w.P3.AngularB, l3);
-            angularB.AddScaled(w.Normal, w.TwistImpulse);
+            WideVector3 angularA = WarmAngular(w, w.CentroidA, friction, w.P0.AngularA, w.P1.AngularA, w.P2.AngularA, w.P3.AngularA);
+            WideVector3 angularB = WarmAngular(w, w.CentroidB, friction, w.P0.AngularB, w.P1.AngularB, w.P2.AngularB, w.P3.AngularB);
             Apply(linear, angularA, angularB, ref l);
             WideBodies.Scatter(bodies, laneBodies, groupOffset, ref l);
+        }
+
+        /// <summary>
+        /// One body's angular warm-start impulse: the friction's moment about its
+        /// <paramref name="centroid"/>, then the four normal rows' angular parts
+        /// (<paramref name="a0"/>..<paramref name="a3"/>, that body's side) and the twist row, each
+        /// scaled by its accumulated impulse.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        static WideVector3 WarmAngular(in WideContact w, in WideVector3 centroid, in WideVector3 friction,
+            in WideVector3 a0, in WideVector3 a1, in WideVector3 a2, in WideVector3 a3)
+        {
+            // The friction rows' angular parts are c x t: their impulse's moment is c x (f1 t1 + f2 t2).
+            WideVector3 angular = WideVector3.Cross(centroid, friction);
+            angular.AddScaled(a0, w.P0.Impulse);
+            angular.AddScaled(a1, w.P1.Impulse);
+            angular.AddScaled(a2, w.P2.Impulse);
+            angular.AddScaled(a3, w.P3.Impulse);
+            angular.AddScaled(w.Normal, w.TwistImpulse);
+            return angular;
         }
 
         /// <summary>n . (dpB - dpA): how far the centres of mass have closed along the normal since the step began.</summary>
