@@ -36,9 +36,7 @@ namespace Fulcrum.Components
             get => _substeps;
             set
             {
-                if (value < 0 || value > 1000) throw new ArgumentException($"{this}: substeps must be in [0, 1000], got {value}.", nameof(substeps));
-                ThrowIfStepping(nameof(substeps));
-                _substeps = value;
+                SetCount(ref _substeps, value, 0, nameof(substeps));
                 SoftBodies.SoftBody? b = body;
                 if (b != null) b.Substeps = value;
             }
@@ -50,9 +48,7 @@ namespace Fulcrum.Components
             get => _iterations;
             set
             {
-                if (value < 1 || value > 1000) throw new ArgumentException($"{this}: iterations must be in [1, 1000], got {value}.", nameof(iterations));
-                ThrowIfStepping(nameof(iterations));
-                _iterations = value;
+                SetCount(ref _iterations, value, 1, nameof(iterations));
                 SoftBodies.SoftBody? b = body;
                 if (b != null) b.Iterations = value;
             }
@@ -68,6 +64,15 @@ namespace Fulcrum.Components
                 SoftBodies.SoftBody? b = body;
                 if (b != null) b.DampingTime = value;
             }
+        }
+
+        // The head of the substeps and iterations setters: a count in [min, 1000], refused
+        // mid-step, then stored; the caller then hands it to the live body.
+        void SetCount(ref int field, int value, int min, string member)
+        {
+            if (value < min || value > 1000) throw new ArgumentException($"{this}: {member} must be in [{min}, 1000], got {value}.", member);
+            ThrowIfStepping(member);
+            field = value;
         }
 
         void ApplySettings(ref SoftBodyDef def)
