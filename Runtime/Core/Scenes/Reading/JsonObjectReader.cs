@@ -70,27 +70,21 @@ namespace Fulcrum.Scenes
             if (!_known.Contains(key)) _known.Add(key);
         }
 
-        public float Float(string key, float fallback, bool required = false)
+        public float Float(string key, float fallback, bool required = false) => OptionalFloat(key, required) ?? fallback;
+
+        /// <summary>The member's number; null when absent (reported when required) or not a float (reported).</summary>
+        public float? OptionalFloat(string key, bool required = false)
         {
             JsonValue? v = Take(key, required);
-            return v != null && ReadFloat(v, _d, out float f) ? f : fallback;
-        }
-
-        public float? OptionalFloat(string key)
-        {
-            JsonValue? v = Take(key);
             return v != null && ReadFloat(v, _d, out float f) ? f : (float?)null;
         }
 
-        public int Int(string key, int fallback, bool required = false)
+        public int Int(string key, int fallback, bool required = false) => OptionalInt(key, required) ?? fallback;
+
+        /// <summary>The member's integer; null when absent (reported when required) or not an int (reported).</summary>
+        public int? OptionalInt(string key, bool required = false)
         {
             JsonValue? v = Take(key, required);
-            return v != null && ReadInt(v, _d, out int i) ? i : fallback;
-        }
-
-        public int? OptionalInt(string key)
-        {
-            JsonValue? v = Take(key);
             return v != null && ReadInt(v, _d, out int i) ? i : (int?)null;
         }
 
@@ -113,10 +107,7 @@ namespace Fulcrum.Scenes
                 _d.Add(v.Path, $"expected an array of integers, got {Describe(v)}", v);
                 return null;
             }
-            var r = new int[v.Items.Count];
-            bool ok = true;
-            for (int i = 0; i < r.Length; i++) ok &= ReadInt(v.Items[i], _d, out r[i]);
-            return ok ? r : null;
+            return ReadInts(v.Items);
         }
 
         public bool Bool(string key, bool fallback)
@@ -180,9 +171,15 @@ namespace Fulcrum.Scenes
                 _d.Add(v.Path, $"expected an array of {count} integers, got {Describe(v)}", v);
                 return null;
             }
-            var r = new int[count];
+            return ReadInts(v.Items);
+        }
+
+        // Every item as an integer (each bad one reported); null when any is not.
+        int[]? ReadInts(IReadOnlyList<JsonValue> items)
+        {
+            var r = new int[items.Count];
             bool ok = true;
-            for (int i = 0; i < count; i++) ok &= ReadInt(v.Items[i], _d, out r[i]);
+            for (int i = 0; i < r.Length; i++) ok &= ReadInt(items[i], _d, out r[i]);
             return ok ? r : null;
         }
 
