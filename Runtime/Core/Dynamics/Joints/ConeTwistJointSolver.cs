@@ -53,8 +53,7 @@ namespace Fulcrum.Dynamics
             _twist = JointSolver.TwistAngle(fA, fB);
             _limits = j.TwistAngle < MathF.PI;
             k.Cone.SetAngular(-_swingAxis);
-            k.LowerLimit.SetAngular(_t);
-            k.UpperLimit.SetAngular(-_t);
+            JointLimits.SetAngular(ref k.LowerLimit, ref k.UpperLimit, _t);
             if (!mass) return;
             k.Point.ComputeMass(a, b, g.ArmA, g.ArmB);
             k.Cone.ComputeMass(a, b);
@@ -68,11 +67,7 @@ namespace Fulcrum.Dynamics
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
             JointSolver.WarmStartFriction(j.FrictionTorque, k.FrictionImpulse, ref a, ref b);
             if (_cone) k.Cone.WarmStart(ref a, ref b);
-            if (_limits)
-            {
-                k.LowerLimit.WarmStart(ref a, ref b);
-                k.UpperLimit.WarmStart(ref a, ref b);
-            }
+            JointLimits.WarmStart(k.LowerLimit, k.UpperLimit, _limits, _limits, ref a, ref b);
             k.Point.WarmStart(ref a, ref b, g.ArmA, g.ArmB);
         }
 
@@ -101,11 +96,7 @@ namespace Fulcrum.Dynamics
         {
             ref ConeTwistJointParts k = ref j.Parts.ConeTwist;
             if (_cone) k.Cone.SolvePosition(ref a, ref b, MathF.Min(j.ConeAngle - _swing, 0), beta, maxC);
-            if (_limits)
-            {
-                k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_twist + j.TwistAngle, 0), beta, maxC);
-                k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.TwistAngle - _twist, 0), beta, maxC);
-            }
+            JointLimits.SolvePosition(k.LowerLimit, k.UpperLimit, _limits, _limits, ref a, ref b, _twist + j.TwistAngle, j.TwistAngle - _twist, beta, maxC);
             k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta, maxC);
         }
 

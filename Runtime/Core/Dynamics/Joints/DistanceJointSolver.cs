@@ -43,8 +43,7 @@ namespace Fulcrum.Dynamics
             _upper = !_rigid && j.HasUpperLimit;
             _spring = !_rigid && j.SpringHertz > 0;
             k.Length.SetLinear(rA, rB, n);
-            k.LowerLimit.SetLinear(rA, rB, n);
-            k.UpperLimit.SetLinear(rA, rB, -n);
+            JointLimits.SetLinear(ref k.LowerLimit, ref k.UpperLimit, rA, rB, n);
             k.Spring.SetLinear(rA, rB, n);
             if (!mass) return;
             k.Length.ComputeMass(a, b);
@@ -57,8 +56,7 @@ namespace Fulcrum.Dynamics
             ref DistanceJointParts k = ref j.Parts.Distance;
             if (_rigid) k.Length.WarmStart(ref a, ref b);
             if (_spring) k.Spring.WarmStart(ref a, ref b);
-            if (_lower) k.LowerLimit.WarmStart(ref a, ref b);
-            if (_upper) k.UpperLimit.WarmStart(ref a, ref b);
+            JointLimits.WarmStart(k.LowerLimit, k.UpperLimit, _lower, _upper, ref a, ref b);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -76,8 +74,7 @@ namespace Fulcrum.Dynamics
         {
             ref DistanceJointParts k = ref j.Parts.Distance;
             if (_rigid) k.Length.SolvePosition(ref a, ref b, _length - j.MinLength, beta, maxC);
-            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_length - j.MinLength, 0), beta, maxC);
-            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.MaxLength - _length, 0), beta, maxC);
+            JointLimits.SolvePosition(k.LowerLimit, k.UpperLimit, _lower, _upper, ref a, ref b, _length - j.MinLength, j.MaxLength - _length, beta, maxC);
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -80,8 +80,7 @@ namespace Fulcrum.Dynamics
                 k.Rotation.Impulse1 = k.Rotation.Impulse2 = 0;
             }
             else k.Swing.Impulse = 0;
-            k.LowerLimit.SetAngular(axis);
-            k.UpperLimit.SetAngular(-axis);
+            JointLimits.SetAngular(ref k.LowerLimit, ref k.UpperLimit, axis);
             k.Motor.SetAngular(axis);
             k.Spring.SetAngular(axis);
             if (!mass) return;
@@ -99,8 +98,7 @@ namespace Fulcrum.Dynamics
             if (_spring) k.Spring.WarmStart(ref a, ref b);
             JointSolver.WarmStartFriction(j.FrictionTorque, k.FrictionImpulse, ref a, ref b);
             if (_motor) k.Motor.WarmStart(ref a, ref b);
-            if (_lower) k.LowerLimit.WarmStart(ref a, ref b);
-            if (_upper) k.UpperLimit.WarmStart(ref a, ref b);
+            JointLimits.WarmStart(k.LowerLimit, k.UpperLimit, _lower, _upper, ref a, ref b);
             if (_swing) k.Swing.WarmStart(ref a, ref b);
             else k.Rotation.WarmStart(ref a, ref b, _u1, _u2);
             k.Point.WarmStart(ref a, ref b, g.ArmA, g.ArmB);
@@ -130,8 +128,7 @@ namespace Fulcrum.Dynamics
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC)
         {
             ref HingeJointParts k = ref j.Parts.Hinge;
-            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_angle - j.Lower, 0), beta, maxC);
-            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.Upper - _angle, 0), beta, maxC);
+            JointLimits.SolvePosition(k.LowerLimit, k.UpperLimit, _lower, _upper, ref a, ref b, _angle - j.Lower, j.Upper - _angle, beta, maxC);
             if (_swing) k.Swing.SolvePosition(ref a, ref b, _swingAngle, beta, maxC);
             else k.Rotation.SolvePosition(ref a, ref b, _u1, _u2, _e1, _e2, beta, maxC);
             k.Point.SolvePosition(ref a, ref b, g.ArmA, g.ArmB, g.Gap, beta, maxC);

@@ -54,8 +54,7 @@ namespace Fulcrum.Dynamics
             _motor = j.MaxMotorForce > 0;
             k.Perp1.SetLinear(armA, rB, p1);
             k.Perp2.SetLinear(armA, rB, p2);
-            k.LowerLimit.SetLinear(armA, rB, axis);
-            k.UpperLimit.SetLinear(armA, rB, -axis);
+            JointLimits.SetLinear(ref k.LowerLimit, ref k.UpperLimit, armA, rB, axis);
             k.Motor.SetLinear(armA, rB, axis);
             if (!mass) return;
             k.Perp1.ComputeMass(a, b);
@@ -70,8 +69,7 @@ namespace Fulcrum.Dynamics
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
             if (_motor) k.Motor.WarmStart(ref a, ref b);
-            if (_lower) k.LowerLimit.WarmStart(ref a, ref b);
-            if (_upper) k.UpperLimit.WarmStart(ref a, ref b);
+            JointLimits.WarmStart(k.LowerLimit, k.UpperLimit, _lower, _upper, ref a, ref b);
             k.Lock.WarmStart(ref a, ref b);
             k.Perp1.WarmStart(ref a, ref b);
             k.Perp2.WarmStart(ref a, ref b);
@@ -97,8 +95,7 @@ namespace Fulcrum.Dynamics
         public void SolvePosition(ref JointData j, ref SolverBody a, ref SolverBody b, in JointGeometry g, float beta, float maxC)
         {
             ref PrismaticJointParts k = ref j.Parts.Prismatic;
-            if (_lower) k.LowerLimit.SolvePosition(ref a, ref b, MathF.Min(_x - j.Lower, 0), beta, maxC);
-            if (_upper) k.UpperLimit.SolvePosition(ref a, ref b, MathF.Min(j.Upper - _x, 0), beta, maxC);
+            JointLimits.SolvePosition(k.LowerLimit, k.UpperLimit, _lower, _upper, ref a, ref b, _x - j.Lower, j.Upper - _x, beta, maxC);
             k.Lock.SolvePosition(ref a, ref b, _angle, beta, maxC);
             k.Perp1.SolvePosition(ref a, ref b, _c1, beta, maxC);
             k.Perp2.SolvePosition(ref a, ref b, _c2, beta, maxC);
