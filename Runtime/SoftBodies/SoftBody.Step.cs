@@ -27,6 +27,7 @@ namespace Fulcrum.SoftBodies
         internal void BeginStep(float dt, RigidCoupling coupling)
         {
             Array.Copy(X, XStart, X.Length);
+            SubstepsBegun = 0;
             if (CollideWithShapes) Contacts.Gather(World, this, dt, coupling);
             AttachmentSolver.Track(World, Attachments, coupling);
             SelfContacts?.FindPairs(X, V, dt);
@@ -173,6 +174,7 @@ namespace Fulcrum.SoftBodies
         /// </summary>
         internal void Substep(float h, RigidCoupling coupling, IParallelScheduler? pool)
         {
+            SubstepsBegun++;
             // Newton: the energy of the body and the rigid bodies it moves before the substep, for
             // the guard after it.
             bool guard = Solver == SoftSolver.Newton;
@@ -237,6 +239,7 @@ namespace Fulcrum.SoftBodies
                 // pressed on the tets is taken back before the next Newton step sees it.
                 if (Tets.Length > 0) VolumeFloor.HoldAll(TetData, X, 0, Tets.Length);
             }
+            NewtonSolver!.PushSoftBodies(this, h);
             EndPositions(h, coupling);
         }
 

@@ -308,6 +308,12 @@ namespace Fulcrum.SoftBodies
         /// <summary>The Newton solver's band system, built when the solver is first Newton.</summary>
         internal ImplicitNewtonSolver? NewtonSolver;
 
+        /// <summary>This step's contact pairs with other soft bodies (null when this body is in none), set before the substeps.</summary>
+        internal SoftSoftContacts? SoftPairs;
+
+        /// <summary>Substeps begun in the current step: a body whose count is not below another's has stepped the substep that one is in.</summary>
+        internal int SubstepsBegun;
+
         /// <summary>Plastic flow settings.</summary>
         public SoftPlasticity Plasticity { get; set; }
 
@@ -324,8 +330,8 @@ namespace Fulcrum.SoftBodies
             : _solver == SoftSolver.Newton && !Touching ? 1
             : Math.Max(1, Math.Min(64, (int)MathF.Ceiling(dt * 600f - 1e-3f)));
 
-        /// <summary>True when this step's gather found shapes within reach or the body has attachments.</summary>
-        internal bool Touching => Attachments.Length > 0 || (CollideWithShapes && (Contacts.CandidateCount > 0 || Contacts.MeshPairCount > 0));
+        /// <summary>True when this step's gather found shapes or other soft bodies within reach, or the body has attachments.</summary>
+        internal bool Touching => Attachments.Length > 0 || SoftPairs != null || (CollideWithShapes && (Contacts.CandidateCount > 0 || Contacts.MeshPairCount > 0));
 
         /// <summary>The world position of probe <paramref name="index"/> (barycentric in its rest element).</summary>
         public Vector3 GetProbe(int index)

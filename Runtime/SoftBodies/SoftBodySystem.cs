@@ -9,7 +9,8 @@ namespace Fulcrum.SoftBodies
     /// substeps together (the largest substep count any of them asks for), so a rigid body
     /// touched by two soft bodies sees both at the same instants.
     /// Reads and writes the rigid bodies it touches (pose, velocity) through <see cref="RigidCoupling"/>.
-    /// Bodies that touch each other are resolved after every substep by <see cref="SoftSoftContacts"/>.
+    /// Bodies that touch each other are resolved after every substep by <see cref="SoftSoftContacts"/>,
+    /// and a Newton body's step takes the other body's inertia in as well (see ImplicitNewtonSolver.SoftContacts).
     /// </summary>
     public sealed partial class SoftBodySystem : ISoftBodyStage
     {
@@ -70,12 +71,12 @@ namespace Fulcrum.SoftBodies
 
             _coupling.Begin(world, dt);
             for (int k = 0; k < count; k++) this[k].BeginStep(dt, _coupling);
-            // After BeginStep: a Newton body's substeps depend on whether it touches anything.
+            _softContacts.FindPairs(this, world.Gravity.Length(), dt);
+            // After BeginStep and the pairs: a Newton body's substeps depend on whether it touches anything.
             int substeps = 1;
             for (int k = 0; k < count; k++) substeps = Math.Max(substeps, this[k].SubstepsFor(dt));
             float h = dt / substeps;
             _coupling.SetSubsteps(substeps);
-            _softContacts.FindPairs(this, world.Gravity.Length(), dt);
             for (int s = 0; s < substeps; s++)
             {
                 _coupling.BeginSubstep((s + 1f) / substeps, h);

@@ -46,6 +46,8 @@ namespace Fulcrum.Tests.State
             // Newton solver are saved by SoftBody.WriteState and checked by the round-trip tests), job objects and scratch.
             "SoftBodySystem._coupling", "SoftBodySystem._softContacts", "SoftBodySystem.Diverged",
             "SoftBody._tetJob", "SoftBody._membraneJob", "SoftBody._bendingJob", "SoftBody.Contacts", "SoftBody.SelfContacts", "SoftBody._scratch",
+            // The step's soft-soft pairs and the count of substeps begun: set at the start of every step.
+            "SoftBody.SoftPairs", "SoftBody.SubstepsBegun",
             // The tet kernels' (W, FreeW, M, inverted mark) per vertex, the same masses per element, and
             // whether the body is pressed from outside (the volume floor): set from the saved arrays at
             // the start of every step.

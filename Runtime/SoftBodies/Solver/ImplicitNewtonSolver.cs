@@ -113,6 +113,7 @@ namespace Fulcrum.SoftBodies
             float[] m = body.M;
             double invH2 = 1.0 / ((double)h * h);
             _contacts = 0; // gathered below; G before then counts inertia, strain and attachments
+            _softTerms = 0;
             _overlaps = 0;
             Array.Clear(_overlapping, 0, _n);
             BeginAttachments(body, x, y, invH2);
@@ -281,6 +282,7 @@ namespace Fulcrum.SoftBodies
             }
 
             if (_bodyCount > 0) CoupleBodies(body, invH2);
+            if (body.SoftPairs != null) AddSoftContacts(body, x, h, invH2);
 
             // Pinned vertices and those attached to immovable bodies: Dirichlet rows (identity, zero step).
             for (int i = 0; i < _n; i++)
@@ -386,7 +388,7 @@ namespace Fulcrum.SoftBodies
         /// </summary>
         void KeepMomentum(SoftBody body, Vector3[] x, Vector3[] y, float taken, float h, RigidCoupling coupling)
         {
-            if (_contacts > 0) return;
+            if (_contacts > 0 || _softTerms > 0) return;
             Attachment[] attachments = body.Attachments;
             for (int k = 0; k < attachments.Length; k++) if (_bodyOf[k] == Held) return;
             BodyStorage b = body.World.Bodies;
@@ -457,6 +459,7 @@ namespace Fulcrum.SoftBodies
                 double gap = Vector3.Dot(x[_overlapVertex[c]] - _overlapPoint[c], _overlapNormal[c]);
                 if (gap < 0) e += 0.5 * _overlapStiffness[c] * gap * gap;
             }
+            if (_softTerms > 0) e += SoftContactEnergy(x);
             Span<double> f = stackalloc double[9];
             foreach (TetElement t in body.Tets)
             {

@@ -15,8 +15,9 @@ namespace Fulcrum.Tests.Robustness
     /// go down; each failing world is listed one per line so it can be replayed
     /// (<c>fulcrum fuzz --soft --count 1 --seed N</c>).
     /// <para>
-    /// Known and not yet fixed (seeds 0-199): 5 worlds diverge (reported), 4 gain energy and 1
-    /// ends with an inverted element; seeds 200-399: 5, 3 and 2. Before the Newton solver took
+    /// Known and not yet fixed (seeds 0-199): 6 worlds diverge (reported), 3 gain energy and 2
+    /// end with an inverted element; seeds 200-399: 2, 4 and 3; seeds 400-599: 4, 2 and 0
+    /// (Documentation~/SoftSolvers.md keeps the history). Before the Newton solver took
     /// attached rigid bodies into its step, its energy guard counted the rigid bodies it moves
     /// and a pinned body's step started from the substep's start, 19, 3 and 4, and 21, 2 and 1
     /// (before the guard, 29 diverged of 0-199).
@@ -34,8 +35,12 @@ namespace Fulcrum.Tests.Robustness
         // another soft body was thrown off): seeds 47 and 93 (diverged) and 53 and 94 (ended
         // inverted), heavy bodies crushing very soft Newton bodies (E 2e3-3e4 Pa), fail since;
         // over seeds 0-599 the failing worlds went from 28 to 32 (33 before this session's fixes).
+        // Lowered with soft-soft contact inside the Newton step (a Newton body's step sees the
+        // other soft body's inertia; corrections after it reach a Newton body as velocity only):
+        // seeds 53 (ended inverted) and 86 (diverged), a Newton body on another soft body, pass;
+        // over seeds 0-599 the failing worlds went from 32 to 26.
         [TestCase(0, 50, 1, 0, 0)]
-        [TestCase(50, 50, 4, 0, 2)]
+        [TestCase(50, 50, 3, 0, 1)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
             var failures = new List<string>();
