@@ -23,6 +23,9 @@ namespace Fulcrum.SoftBodies
         /// </summary>
         internal static float InertiaRatio = 0.5f;
 
+        /// <summary>The velocity gravity adds in a substep of <paramref name="h"/> (in the step's scaled masses).</summary>
+        internal Vector3 GravityStep(float h) => World.Gravity * (GravityScale * h / _inertiaScale);
+
         /// <summary>Once per world step, before the substeps: find the shapes and pairs the step may touch.</summary>
         internal void BeginStep(float dt, RigidCoupling coupling)
         {
@@ -184,7 +187,7 @@ namespace Fulcrum.SoftBodies
                 coupling.Snapshot();
                 before = Energy() + coupling.Energy(World.Gravity);
             }
-            Vector3 dv = World.Gravity * (GravityScale * h / _inertiaScale);
+            Vector3 dv = GravityStep(h);
             float keep = LinearDamping > 0 ? 1f / (1f + LinearDamping * h) : 1f;
             for (int i = 0; i < X.Length; i++)
             {
@@ -257,6 +260,7 @@ namespace Fulcrum.SoftBodies
             SelfContacts?.Solve(X, W);
             float invH = 1f / h;
             for (int i = 0; i < X.Length; i++) V[i] = W[i] == 0f ? Vector3.Zero : (X[i] - XPrev[i]) * invH;
+            if (CollideWithShapes && Solver == SoftSolver.Newton) Contacts.ApplyFrictionVelocities(V, W, invH);
         }
 
         /// <summary>Every element family, colour by colour: the position solve, or the damping pass.</summary>

@@ -167,10 +167,14 @@ namespace Fulcrum.Tests.SoftBodies
         // least 0.15, the volume within 0.5 % at the end, and the motion's energy (kinetic and
         // gravitational) never above its start. The guard does not undo the strain; the
         // in-step springs to the ground keep the struck corner from being crushed (below).
-        [TestCase(0.49f, 10f)]
-        [TestCase(0.4999f, 3f)]
-        [TestCase(0.4999f, 10f)]
-        public void A_nearly_incompressible_newton_cube_thrown_at_the_ground_never_gains_energy(float nu, float speed)
+        // With ground friction acting on Newton bodies (before, their springs to the ground left
+        // the friction no normal impulse to act on: none at all), the throw down and across brakes
+        // at the struck corner: min J 0.67 and 0.79, and 0.51 at nu 0.4999 and 10 m/s (an XPBD
+        // cube in the same grid keeps 0.32-0.76).
+        [TestCase(0.49f, 10f, 0.6f)]
+        [TestCase(0.4999f, 3f, 0.6f)]
+        [TestCase(0.4999f, 10f, 0.45f)]
+        public void A_nearly_incompressible_newton_cube_thrown_at_the_ground_never_gains_energy(float nu, float speed, float leastJ)
         {
             World w = SoftBodyScenes.WorldWithGround();
             var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.2f), 4, 4, 4), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e6f, nu, 1000f), new Vector3(0, 0.5f, 0));
@@ -200,8 +204,9 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(SoftBodySystem.Of(w)!.DivergenceCount, Is.EqualTo(0));
             // 0.15-0.23 before overlaps with immovable shapes were springs inside the Newton step
             // (the contact pass after it crushed the struck corner); 0.43-0.60 with them, while the
-            // "held" penalty doubled the springs' stiffness along the normal; 0.72-0.82 since.
-            Assert.That(minJ, Is.GreaterThan(0.6f), "the struck corner is not crushed");
+            // "held" penalty doubled the springs' stiffness along the normal; 0.72-0.82 with that
+            // fixed and no friction; with friction, see the cases.
+            Assert.That(minJ, Is.GreaterThan(leastJ), "the struck corner is not crushed");
             Assert.That(volume, Is.EqualTo(1f).Within(0.01f));
             Assert.That(most, Is.LessThanOrEqualTo(start + 1e-3 * Math.Abs(start)), "no energy from the contacts");
         }

@@ -58,6 +58,12 @@ namespace Fulcrum.SoftBodies
         readonly double[] _overlapStiffness;
         readonly bool[] _overlapping;
         int _overlaps;
+        // Vertices held along a shape's normal by the penalty of Step (no force where the step
+        // starts): vertex, normal, stiffness; for the friction support (ReportSupport).
+        readonly int[] _heldVertex;
+        readonly Vector3[] _heldNormal;
+        readonly double[] _heldStiffness;
+        int _helds;
 
         public ImplicitNewtonSolver(SoftBody body)
         {
@@ -102,6 +108,9 @@ namespace Fulcrum.SoftBodies
             _overlapPoint = new Vector3[_n];
             _overlapStiffness = new double[_n];
             _overlapping = new bool[_n];
+            _heldVertex = new int[_n];
+            _heldNormal = new Vector3[_n];
+            _heldStiffness = new double[_n];
         }
 
         ref double At(int row, int col) => ref _matrix[row * (_band + 1) + col - row + _band];
@@ -115,6 +124,7 @@ namespace Fulcrum.SoftBodies
             _contacts = 0; // gathered below; G before then counts inertia, strain and attachments
             _softTerms = 0;
             _overlaps = 0;
+            _helds = 0;
             Array.Clear(_overlapping, 0, _n);
             BeginAttachments(body, x, y, invH2);
             StartFromPrevious(body, x, y, invH2);
@@ -235,6 +245,9 @@ namespace Fulcrum.SoftBodies
                     double k = 1e4 * m[i] * invH2 + 1e3 * At(r, r);
                     for (int a = 0; a < 3; a++)
                         for (int b = 0; b <= a; b++) At(r + a, r + b) += k * Component(normal, a) * Component(normal, b);
+                    _heldVertex[_helds] = i;
+                    _heldNormal[_helds] = normal;
+                    _heldStiffness[_helds++] = k;
                 }
 
             // Dynamic bodies in the solve (added mass): each vertex touching a dynamic body carries
@@ -348,6 +361,65 @@ namespace Fulcrum.SoftBodies
             }
             KeepMomentum(body, x, y, (float)taken, h, coupling);
             PushBodies(body, x, h, coupling);
+            ReportSupport(body, x, y, h);
+        }
+
+        /// <summary>
+        /// The normal impulse each ground spring of the step carried, for the friction of the
+        /// contact pass (<see cref="ShapeContactSolver.Support"/>). A spring's own measure, k h^2
+        /// times how deep its vertex ends (for a held vertex, how far the step took it into the
+        /// shape from its inertial target y), is its force only where the step converged; at a
+        /// landing it came out a thousand times the impulse that stopped the body, and the
+        /// friction of that one substep stopped a sliding slab dead. So the springs' measures
+        /// are scaled, together, to the normal impulse the body as a whole took in the step,
+        /// sum_i m_i n . (x_i - y_i) along their mean normal n (internal forces cancel in that
+        /// sum), never up. Where the springs' normals disagree (a body pressed between two
+        /// shapes) their own measures stand.
+        /// </summary>
+        void ReportSupport(SoftBody body, Vector3[] x, Vector3[] y, float h)
+        {
+            if (_overlaps == 0 && _helds == 0) return;
+            double h2 = (double)h * h, sum = 0;
+            Vector3 mean = Vector3.Zero;
+            for (int c = 0; c < _overlaps + _helds; c++)
+            {
+                double f = SpringImpulse(c, x, y, h2, out Vector3 n);
+                sum += f;
+                mean += (float)f * n;
+            }
+            if (!(sum > 0)) return;
+            double scale = 1;
+            float length = mean.Length();
+            if (length > 0.5f * sum)
+            {
+                mean /= length;
+                double taken = 0;
+                float[] m = body.M;
+                for (int i = 0; i < _n; i++) if (!_fixed[i]) taken += m[i] * Vector3.Dot(mean, x[i] - y[i]);
+                scale = Math.Min(1, Math.Max(0, taken) / sum);
+            }
+            for (int c = 0; c < _overlaps + _helds; c++)
+            {
+                double f = SpringImpulse(c, x, y, h2, out _);
+                if (f > 0) body.Contacts.Support(c < _overlaps ? _overlapVertex[c] : _heldVertex[c - _overlaps], (float)(scale * f));
+            }
+        }
+
+        // Spring c's own measure of its normal impulse (the overlap springs first, then the held
+        // vertices), and its normal.
+        double SpringImpulse(int c, Vector3[] x, Vector3[] y, double h2, out Vector3 normal)
+        {
+            if (c < _overlaps)
+            {
+                normal = _overlapNormal[c];
+                double gap = Vector3.Dot(x[_overlapVertex[c]] - _overlapPoint[c], normal);
+                return gap < 0 ? _overlapStiffness[c] * h2 * -gap : 0;
+            }
+            c -= _overlaps;
+            normal = _heldNormal[c];
+            int i = _heldVertex[c];
+            double into = -Vector3.Dot(x[i] - y[i], normal);
+            return into > 0 ? _heldStiffness[c] * h2 * into : 0;
         }
 
         /// <summary>
