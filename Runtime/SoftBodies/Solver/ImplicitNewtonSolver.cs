@@ -370,11 +370,11 @@ namespace Fulcrum.SoftBodies
         /// times how deep its vertex ends (for a held vertex, how far the step took it into the
         /// shape from its inertial target y), is its force only where the step converged; at a
         /// landing it came out a thousand times the impulse that stopped the body, and the
-        /// friction of that one substep stopped a sliding slab dead. So the springs' measures
-        /// are scaled, together, to the normal impulse the body as a whole took in the step,
-        /// sum_i m_i n . (x_i - y_i) along their mean normal n (internal forces cancel in that
-        /// sum), never up. Where the springs' normals disagree (a body pressed between two
-        /// shapes) their own measures stand.
+        /// friction of that one substep stopped a sliding slab dead; resting on a slope it came
+        /// out up to 30 % short. So the springs' measures are scaled, together, to the normal
+        /// impulse the body as a whole took in the step, sum_i m_i n . (x_i - y_i) along their
+        /// mean normal n (internal forces cancel in that sum). Where the springs' normals
+        /// disagree (a body pressed between two shapes) their own measures stand.
         /// </summary>
         void ReportSupport(SoftBody body, Vector3[] x, Vector3[] y, float h)
         {
@@ -396,7 +396,7 @@ namespace Fulcrum.SoftBodies
                 double taken = 0;
                 float[] m = body.M;
                 for (int i = 0; i < _n; i++) if (!_fixed[i]) taken += m[i] * Vector3.Dot(mean, x[i] - y[i]);
-                scale = Math.Min(1, Math.Max(0, taken) / sum);
+                scale = Math.Max(0, taken) / sum;
             }
             for (int c = 0; c < _overlaps + _helds; c++)
             {
