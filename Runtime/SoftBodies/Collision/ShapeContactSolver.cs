@@ -196,15 +196,18 @@ namespace Fulcrum.SoftBodies
                 _normal = normal;
                 _stuckNow = stuck;
                 _stuckLast = new bool[held.Length];
-                if (_pushed.Length != held.Length)
-                {
-                    _pushed = new float[held.Length];
-                    _held = new float[held.Length];
-                    _support = new float[held.Length];
-                    _frictionMove = new Vector3[held.Length];
-                    _newtonOwner = new int[held.Length];
-                }
+                if (_pushed.Length != held.Length) AllocateSubstepScratch(held.Length);
             };
+        }
+
+        // The per-vertex arrays each substep starts from zero (BeginSubstep clears them).
+        void AllocateSubstepScratch(int vertexCount)
+        {
+            _pushed = new float[vertexCount];
+            _held = new float[vertexCount];
+            _support = new float[vertexCount];
+            _frictionMove = new Vector3[vertexCount];
+            _newtonOwner = new int[vertexCount];
         }
 
         /// <summary>
@@ -285,16 +288,12 @@ namespace Fulcrum.SoftBodies
         {
             if (_pushed.Length < vertexCount)
             {
-                _pushed = new float[vertexCount];
-                _held = new float[vertexCount];
-                _support = new float[vertexCount];
-                _frictionMove = new Vector3[vertexCount];
+                AllocateSubstepScratch(vertexCount);
                 _stuckNow = new bool[vertexCount];
                 _stuckLast = new bool[vertexCount];
                 _normal = new Vector3[vertexCount];
                 _holdNow = new bool[vertexCount];
                 _holdLast = new bool[vertexCount];
-                _newtonOwner = new int[vertexCount];
             }
             int triangles = _surface != null ? _surface.Length / 3 : 0;
             if (_trianglePushed.Length < triangles)
