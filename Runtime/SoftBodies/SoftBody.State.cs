@@ -82,7 +82,7 @@ namespace Fulcrum.SoftBodies
             bool withShapes = r.Read<bool>("soft shape collision flag"), withSoft = r.Read<bool>("soft soft-collision flag");
             var plasticity = r.Read<SoftPlasticity>("soft plasticity");
             var solver = r.Read<SoftSolver>("soft solver");
-            Action contacts = Contacts.PrepareRestore(r, X.Length, Mesh.SurfaceTriangles.Length / 3);
+            Action contacts = Contacts.PrepareRestore(r, X.Length);
             if (solver != SoftSolver.Xpbd && (solver != SoftSolver.Newton || Tets.Length == 0)) throw r.Error($"{who}: saved solver {(int)solver} does not fit this body.");
             for (int i = 0; i < tetElements.Length; i++)
             {

@@ -74,9 +74,10 @@ namespace Fulcrum.SoftBodies
         // Per surface triangle over the current substep: the features' normal corrections and
         // the friction spent against them (as _pushed and _held for vertices).
         float[] _trianglePushed = Array.Empty<float>(), _triangleHeld = Array.Empty<float>();
-        // Per surface triangle: whether a shape's feature met it in this substep, and in the last
-        // (a feature meets only a point that came in through the triangle; see ShapeFeatureContacts).
-        bool[] _triangleMetNow = Array.Empty<bool>(), _triangleMetLast = Array.Empty<bool>();
+        // Per vertex: whether a shape's feature met a surface triangle of it in this substep, and
+        // in the last (a feature meets only a point that came in through the triangle or one next
+        // to it; see ShapeFeatureContacts).
+        bool[] _featureMetNow = Array.Empty<bool>(), _featureMetLast = Array.Empty<bool>();
 
         /// <summary>Vertex-triangle pairs gathered against triangle meshes for this step.</summary>
         public int MeshPairCount => _meshes.Count;
@@ -177,23 +178,23 @@ namespace Fulcrum.SoftBodies
             return heaviest;
         }
 
-        /// <summary>Writes what the next step reads: which vertices an immovable shape held in the last substep, and the normals, which static friction held, and which surface triangles a shape's feature met.</summary>
+        /// <summary>Writes what the next step reads: which vertices an immovable shape held in the last substep, and the normals, which static friction held, and which vertices' surface triangles a shape's feature met.</summary>
         internal void WriteState(StateWriter w)
         {
             w.WriteArray(_holdNow);
             w.WriteArray(_normal);
             w.WriteArray(_stuckNow);
-            w.WriteArray(_triangleMetNow);
+            w.WriteArray(_featureMetNow);
         }
 
         /// <summary>Reads what <see cref="WriteState"/> wrote; the returned action applies it.</summary>
-        internal Action PrepareRestore(StateReader r, int vertexCount, int triangleCount)
+        internal Action PrepareRestore(StateReader r, int vertexCount)
         {
             bool[] held = r.ReadArray<bool>("soft contact holds");
             Vector3[] normal = r.ReadArrayExactly<Vector3>("soft contact normals", held.Length);
             bool[] stuck = r.ReadArrayExactly<bool>("soft contact static friction", held.Length);
-            bool[] met = r.ReadArray<bool>("soft contact triangles met");
-            if (met.Length != 0 && met.Length != triangleCount) throw r.Error($"soft contact triangles met for {met.Length} of {triangleCount} surface triangles.");
+            bool[] met = r.ReadArray<bool>("soft contact features met");
+            if (met.Length != 0 && met.Length != vertexCount) throw r.Error($"soft contact features met for {met.Length} of {vertexCount} vertices.");
             if (held.Length != 0 && held.Length < vertexCount) throw r.Error($"soft contact holds for {held.Length} of {vertexCount} vertices.");
             return () =>
             {
@@ -202,8 +203,8 @@ namespace Fulcrum.SoftBodies
                 _normal = normal;
                 _stuckNow = stuck;
                 _stuckLast = new bool[held.Length];
-                _triangleMetNow = met;
-                _triangleMetLast = new bool[met.Length];
+                _featureMetNow = met;
+                _featureMetLast = new bool[met.Length];
                 if (_pushed.Length != held.Length) AllocateSubstepScratch(held.Length);
             };
         }
@@ -309,17 +310,17 @@ namespace Fulcrum.SoftBodies
                 _trianglePushed = new float[triangles];
                 _triangleHeld = new float[triangles];
             }
-            if (_triangleMetNow.Length < triangles)
+            if (_featureMetNow.Length < vertexCount)
             {
-                Array.Resize(ref _triangleMetNow, triangles);
-                _triangleMetLast = new bool[triangles];
+                Array.Resize(ref _featureMetNow, vertexCount);
+                _featureMetLast = new bool[vertexCount];
             }
             Array.Clear(_trianglePushed, 0, _trianglePushed.Length);
             Array.Clear(_triangleHeld, 0, _triangleHeld.Length);
-            bool[] met = _triangleMetLast;
-            _triangleMetLast = _triangleMetNow;
-            _triangleMetNow = met;
-            Array.Clear(_triangleMetNow, 0, _triangleMetNow.Length);
+            bool[] met = _featureMetLast;
+            _featureMetLast = _featureMetNow;
+            _featureMetNow = met;
+            Array.Clear(_featureMetNow, 0, _featureMetNow.Length);
             bool[] last = _holdLast;
             _holdLast = _holdNow;
             _holdNow = last;
@@ -447,7 +448,7 @@ namespace Fulcrum.SoftBodies
                 // The shape's corners and edges against the surface triangles (a tet body's).
                 if (normal && body.Tets.Length > 0 && geometry.Type != ShapeType.Plane
                     && !(world.Bodies.Type[owner] == BodyType.Dynamic && world.Bodies.Mass[owner] > ShapeFeatureContacts.MaxLoadRatio * body.TotalMass))
-                    ShapeFeatureContacts.Solve(body, _surface!, _apex, _restVolume6, geometry, pose, owner, coupling, h, mu, _trianglePushed, _triangleHeld, _triangleMetLast, _triangleMetNow);
+                    ShapeFeatureContacts.Solve(body, _surface!, _apex, _restVolume6, geometry, pose, owner, coupling, h, mu, _trianglePushed, _triangleHeld, _featureMetLast, _featureMetNow);
             }
             // Meshes only before the elastic pass: a second friction pass there let a jelly falling
             // at 4 m/s onto a mesh floor end 2.5 mm deep (the bound is 2 mm).

@@ -27,8 +27,8 @@ namespace Fulcrum.SoftBodies
     /// the triangle's normal corrections of the substep (as the vertex contacts do); without it
     /// a crate balanced on its corner slid off the slab. A push takes out at most the collision
     /// radius per pass (see <see cref="Solve"/>), and a triangle meets only a point that came in
-    /// through it (met in this substep or the last, or at most that radius past its plane when
-    /// the substep began).
+    /// through it or a triangle next to it (one sharing a vertex with it met in this substep or
+    /// the last, or at most that radius past its plane when the substep began).
     /// </para>
     /// <para>
     /// A shape lying flat on the surface is held off it by the vertex contacts at the collision
@@ -57,8 +57,8 @@ namespace Fulcrum.SoftBodies
         /// <paramref name="apex"/> and six times that tet's rest volume in <paramref name="restVolume6"/>;
         /// <paramref name="pushed"/> and <paramref name="held"/> (per triangle) are the substep's
         /// normal corrections and the friction spent against them; <paramref name="metLast"/> and
-        /// <paramref name="metNow"/> which triangles a shape's feature met in the last substep and
-        /// in this one.
+        /// <paramref name="metNow"/> (per vertex) which vertices' triangles a shape's feature met in
+        /// the last substep and in this one.
         /// </summary>
         public static void Solve(SoftBody body, int[] triangles, int[] apex, float[] restVolume6, in ShapeGeometry geometry, in Pose pose,
             int owner, RigidCoupling coupling, float h, float mu, float[] pushed, float[] held, bool[] metLast, bool[] metNow)
@@ -101,22 +101,26 @@ namespace Fulcrum.SoftBodies
                 float wt = s * s * w0 + v * v * w1 + u * u * w2;
                 float wb = coupling.InverseMassAt(owner, deepest, n);
                 if (!(wt + wb > 0f)) continue;
-                // A triangle meets a point that came in through it: one it met in this substep or
-                // the last, or one that was at most the collision radius past its plane when the
-                // substep began (its overlap less the substep's approach, the point's motion into
-                // the triangle relative to it along -n). A point already deep when the triangle
-                // first sees it came in elsewhere, and pushed out of this triangle at the
-                // collision radius per pass it takes energy from nowhere: out of a pinned end face
+                // A triangle meets a point that came in through it or through a triangle next to
+                // it: one it or a triangle sharing a vertex with it met in this substep or the
+                // last (the contact moves across the surface as the body deforms and slides), or
+                // one that was at most the collision radius past its plane when the substep began
+                // (its overlap less the substep's approach, the point's motion into the triangle
+                // relative to it along -n). A point already deep when no triangle around it has
+                // met it came in elsewhere, and pushed out of this triangle at the collision
+                // radius per pass it takes energy from nowhere: out of a pinned end face
                 // (immovable, so the body took it all), a 30 kg ball sunk into a soft box next to
                 // it took 3 m/s a substep and left at 29 m/s, a 3.4 t body 20 m/s and 9e5 J (soft
                 // fuzz seed 117), and a 300 kg ball 0.11 m past a triangle with one pinned vertex
                 // 2.2 m/s in a step (HeavyOnPinnedSoftTests). The vertex contacts and the triangles
                 // it came through meet it. (Stopping such a point at the triangle, taking out the
-                // substep's approach alone, was tried: soft fuzz seed 53 then ended inverted.)
+                // substep's approach alone, was tried: soft fuzz seed 53 then ended inverted.
+                // Counting only the triangle itself, not its neighbours, let a heavy body sink
+                // through a crushed soft box, soft fuzz seed 227.)
                 Vector3 moved = s * (x[i0] - xPrev[i0]) + v * (x[i1] - xPrev[i1]) + u * (x[i2] - xPrev[i2]);
                 float approach = Vector3.Dot(n, moved - coupling.PointVelocity(owner, deepest) * h);
-                if (!metLast[k] && !metNow[k] && -separation - approach > radius) continue;
-                metNow[k] = true;
+                if (!(metLast[i0] || metLast[i1] || metLast[i2] || metNow[i0] || metNow[i1] || metNow[i2]) && -separation - approach > radius) continue;
+                metNow[i0] = metNow[i1] = metNow[i2] = true;
                 // At most the collision radius per pass: the overlap comes out over the
                 // substep's iterations. Taken out at once, a slab crushed by a 1 t crate landing
                 // square had its rim triangles driven through their tets (min J -4.8).
