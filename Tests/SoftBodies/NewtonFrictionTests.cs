@@ -40,25 +40,34 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(s.Momentum.Length() / slab.TotalMass, Is.LessThan(0.01f), "stopped");
         }
 
-        // A 0.3 m cube (3 cells, E 1e6 Pa, nu 0.45) on a 30 degree slope, mu for both the slope
-        // and the cube; the speed down the slope 1.5 s after release against mu's closed form,
-        // and how far it moves in the last second. Measured (Newton): mu 0.8 holds (moves 1.4 cm
-        // in the last second, where an XPBD cube moves none: the part of friction taken out of
-        // the velocity lets a resting body creep); mu 0.4 and 0.2 slide 8 % and 3 % faster
-        // than the closed form (XPBD: 1 % and 0 %).
-        [TestCase(SoftSolver.Newton, 0.8f)]
-        [TestCase(SoftSolver.Newton, 0.4f)]
-        [TestCase(SoftSolver.Newton, 0.2f)]
-        [TestCase(SoftSolver.Xpbd, 0.4f)]
-        public void A_cube_on_a_slope_holds_or_slides_as_coulomb_friction_says(SoftSolver solver, float mu)
+        // A 0.3 m cube (3 cells) on a slope, mu for both the slope and the cube; the speed down
+        // the slope 1.5 s after release against mu's closed form, and how far it moves in the
+        // last second (at most creep, m/s, where it should hold). Measured (Newton), before and
+        // after its friction reached the vertices its springs hold at the collision radius
+        // (ShapeContactSolver.FrictionSkin) and held a resting patch as one (HoldPatch):
+        // - E 1e6 at 30 degrees, mu 0.8: crept 1.4 cm/s, now under 0.1 mm/s (E 1e5: 0.3 mm/s);
+        // - mu 0.4 and 0.2 slid 8 % and 3 % faster than g (sin - mu cos), now 1.4 % and 0.1 %
+        //   (XPBD: 1 % and 0 %);
+        // - still open: nu 0.49 at 30 degrees, mu 0.7, crept 13 cm/s, now 8 cm/s; E 1e8 at 20
+        //   degrees, mu 0.5, crept 31 cm/s, now 10 cm/s. Their bodies keep sliding with friction
+        //   short of the cone; the bound here only keeps them from getting worse.
+        [TestCase(SoftSolver.Newton, 0.8f, 30f, 1e6f, 0.45f, 0.001f)]
+        [TestCase(SoftSolver.Newton, 0.8f, 30f, 1e5f, 0.45f, 0.001f)]
+        [TestCase(SoftSolver.Newton, 0.7f, 30f, 1e6f, 0.49f, 0.12f)]
+        [TestCase(SoftSolver.Newton, 0.5f, 20f, 1e8f, 0.3f, 0.12f)]
+        [TestCase(SoftSolver.Newton, 0.4f, 30f, 1e6f, 0.45f, 0f)]
+        [TestCase(SoftSolver.Newton, 0.2f, 30f, 1e6f, 0.45f, 0f)]
+        [TestCase(SoftSolver.Xpbd, 0.8f, 30f, 1e6f, 0.45f, 0.001f)]
+        [TestCase(SoftSolver.Xpbd, 0.4f, 30f, 1e6f, 0.45f, 0f)]
+        public void A_cube_on_a_slope_holds_or_slides_as_coulomb_friction_says(SoftSolver solver, float mu, float degrees, float youngs, float poisson, float creep)
         {
-            float angle = 30f * MathF.PI / 180f;
+            float angle = degrees * MathF.PI / 180f;
             var world = new World();
             var normal = new Vector3(-MathF.Sin(angle), MathF.Cos(angle), 0);
             var down = new Vector3(-MathF.Cos(angle), -MathF.Sin(angle), 0);
             BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Zero));
             world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(normal, 0f)).With((ref ShapeDef s) => s.Friction = mu));
-            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.3f), 3, 3, 3), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e6f, 0.45f, 1000f), normal * 0.156f);
+            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.3f), 3, 3, 3), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, poisson, 1000f), normal * 0.156f);
             def.Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
             def.Solver = solver;
             def.Friction = mu;
@@ -70,13 +79,13 @@ namespace Fulcrum.Tests.SoftBodies
             float moved = Vector3.Dot(end.Centroid - half, down);
             float speed = Vector3.Dot(end.Momentum / cube.TotalMass, down);
             float expected = MathF.Max(0f, 9.81f * (MathF.Sin(angle) - mu * MathF.Cos(angle))) * 1.5f;
-            TestContext.Out.WriteLine($"{solver} mu {mu}: {speed:F3} m/s down the slope at 1.5 s (closed form {expected:F3}), moved {moved:F4} m in the last second");
+            TestContext.Out.WriteLine($"{solver} E {youngs:G} nu {poisson} at {degrees} degrees, mu {mu}: {speed:F3} m/s down the slope at 1.5 s (closed form {expected:F3}), moved {moved:F4} m in the last second");
             if (expected == 0f)
             {
-                Assert.That(moved, Is.LessThan(0.03f), "holds (creeps less than 3 cm/s)");
-                Assert.That(speed, Is.LessThan(0.05f));
+                Assert.That(MathF.Abs(moved), Is.LessThan(creep), "holds (creeps less than the bound)");
+                Assert.That(MathF.Abs(speed), Is.LessThan(Math.Max(0.005f, creep)));
             }
-            else Assert.That(speed, Is.EqualTo(expected).Within(12).Percent, "slides at g (sin - mu cos)");
+            else Assert.That(speed, Is.EqualTo(expected).Within(3).Percent, "slides at g (sin - mu cos)");
         }
     }
 }
