@@ -374,13 +374,13 @@ namespace Fulcrum.SoftBodies
         /// <summary>How closely a patch's slips must point one way for it to be held as one: 0.8 (see <see cref="HoldPatch"/>).</summary>
         const float Coherent = 0.8f;
 
-        /// <summary>How many times its own cone a vertex of a patch held as one may be held by: 2 (1.5 and 3 measured the same).</summary>
+        /// <summary>How many times its own cone a vertex of a resting patch may be held by: 2 (1.5 and 3 measured the same).</summary>
         const float Borrow = 2f;
 
         /// <summary>How far past the collision radius, as a fraction of it, a Newton body's friction reaches: 0.01 (see Solve).</summary>
         const float FrictionSkin = 0.01f;
 
-        /// <summary>The speed (m/s) against the shape below which a patch vertex counts as resting: 0.1.</summary>
+        /// <summary>The speed (m/s) below which every vertex of a body must be for its patches to hold as one: 0.1.</summary>
         const float RestingSpeed = 0.1f;
 
         /// <summary>Whether every free vertex of the body started the substep slower than <see cref="RestingSpeed"/>.</summary>
@@ -393,43 +393,47 @@ namespace Fulcrum.SoftBodies
             return true;
         }
 
-        // A patch vertex resting on the shape: pushed by it in the last substep too, and moving
-        // slower than RestingSpeed relative to it where the substep began.
-        bool Resting(SoftBody body, int p, int owner, RigidCoupling coupling, Vector3 gravityStep)
-        {
-            int i = _patchVertex[p];
-            return _holdLast[i] && (body.V[i] - gravityStep - coupling.PointVelocity(owner, _patchContact[p])).LengthSquared() < RestingSpeed * RestingSpeed;
-        }
+        // A patch vertex that touched the shape in the last substep too (not one arriving now).
+        bool Settled(int p) => _holdLast[_patchVertex[p]];
 
         /// <summary>
-        /// Friction of a Newton body at rest (every vertex slower than <see cref="RestingSpeed"/>,
-        /// <see cref="Still"/>) against one immovable shape, over the patch of its vertices
-        /// touching it. The vertices resting on the shape (touching it in the last substep too,
-        /// slower than <see cref="RestingSpeed"/> against it) are held together when their slips
-        /// point one way (the length of their sum at least <see cref="Coherent"/> times the sum of
-        /// their lengths) and at least half of them were stuck in the last substep: within the
-        /// cone of them all, mu times the sum of their normal impulses less the friction they
-        /// spent (Coulomb's law for the patch, as a rigid solver's manifold friction), each one
-        /// by at most <see cref="Borrow"/> times its own cone; if the slips need more, each is held
-        /// by the same fraction. Every other vertex is held within its own cone.
+        /// Friction of a Newton body against one immovable shape, over the patch of its vertices
+        /// touching it. The vertices that touched it in the last substep too are taken together
+        /// when their slips point one way (the length of their sum at least
+        /// <see cref="Coherent"/> times the sum of their lengths), like a rigid solver's manifold
+        /// friction, within the cone of them all (mu times the sum of their normal impulses less
+        /// the friction they spent):
+        /// - the patch holds (the slips need no more than that cone), the body is at rest (every
+        ///   vertex slower than <see cref="RestingSpeed"/>, <see cref="Still"/>) and at least half
+        ///   of the vertices were stuck in the last substep: every one is held, each by at most
+        ///   <see cref="Borrow"/> times its own cone;
+        /// - the patch slides (the slips need more): each vertex is held within its own cone, and
+        ///   the cone the vertices held whole leave unused goes to those that slip, the same
+        ///   share of each one's excess, so the patch brakes with the cone of them all.
+        /// Otherwise, and for the vertices arriving now, each vertex within its own cone.
         /// Per vertex, the normal impulses a Newton step's springs measure (<see cref="Support"/>)
-        /// spread over a resting face unlike the pull along it, and the vertices short of them
-        /// slipped every substep, downhill only: a cube resting on a 30 degree slope at mu 0.8
-        /// crept 1.4 cm/s (now at most 0.3 mm/s). Not for a body in motion (seed 93 of the soft
-        /// fuzz, a 4.8 t body crushing a 3.8 kg box, diverged), not at an impact, nor where the slips spread
-        /// apart (a slab crushed by a crate: the ground under its middle cannot hold its edges),
-        /// nor with no bound per vertex: lending one vertex's cone to those arriving beside it
-        /// crushed a struck corner (a nu 0.49 cube thrown at 10 m/s: min J 0.21-0.31, 0.65 now),
-        /// and a stiff slab holding a landed 1 t crate blew apart in one step (put back).
+        /// spread over a face unlike the pull along it: resting, the vertices short of load
+        /// slipped every substep, downhill only (a cube on a 30 degree slope at mu 0.8 crept
+        /// 1.4 cm/s; now at most 0.3 mm/s); sliding, the few vertices carrying a stiff body's load
+        /// were held whole by their own cones and the rest of those cones went unused (a cube of
+        /// E 1e8 Pa slid on at 10 cm/s down a 20 degree slope at mu 0.5, braking at 74 % of the
+        /// cone; now 5.0 cm/s; bounded at twice each vertex's own cone, 8.9 cm/s). The sliding
+        /// patch brakes a struck corner harder: a nu 0.4999 cube thrown down and across at
+        /// 10 m/s reaches min J 0.46 (0.59 before). The static hold is not for a body in motion (soft fuzz seed 93, a
+        /// 4.8 t body crushing a 3.8 kg box, diverged), for vertices arriving (a nu 0.49 cube
+        /// thrown at 10 m/s: the vertices beside its struck corner were held by its cone, min J
+        /// 0.21-0.31 against 0.64), for slips spreading apart (a slab crushed by a crate: the
+        /// ground under its middle cannot hold its edges), nor with no bound per vertex (a stiff
+        /// slab holding a landed 1 t crate blew apart in one step, put back).
         /// </summary>
-        void HoldPatch(SoftBody body, int count, float mu, int owner, RigidCoupling coupling, float h, Vector3 gravityStep)
+        void HoldPatch(SoftBody body, int count, float mu, int owner, RigidCoupling coupling, float h, Vector3 gravityStep, bool still)
         {
             double cone = 0, need = 0;
             Vector3 net = Vector3.Zero;
             int members = 0, stuck = 0;
             for (int p = 0; p < count; p++)
             {
-                if (!Resting(body, p, owner, coupling, gravityStep)) continue;
+                if (!Settled(p)) continue;
                 int i = _patchVertex[p];
                 members++;
                 cone += mu * (_pushed[i] + _support[i]) - _held[i];
@@ -437,19 +441,39 @@ namespace Fulcrum.SoftBodies
                 net += _patchSlip[p] * _patchTangent[p];
                 if (_stuckLast[i]) stuck++;
             }
-            bool pooled = members > 0 && 2 * stuck >= members && net.Length() >= Coherent * need;
+            bool coherent = members > 0 && net.Length() >= Coherent * need;
             bool holds = need <= cone;
-            float fraction = holds ? 1f : need > 0 ? (float)(Math.Max(0, cone) / need) : 0f;
+            bool pooled = coherent && holds && still && 2 * stuck >= members;
+            bool spill = coherent && !holds;
+            float share = 0f;
+            if (spill)
+            {
+                double spare = 0, deficit = 0;
+                for (int p = 0; p < count; p++)
+                {
+                    if (!Settled(p)) continue;
+                    int i = _patchVertex[p];
+                    float own = MathF.Max(0f, mu * (_pushed[i] + _support[i]) - _held[i]);
+                    spare += Math.Max(0, own - _patchSlip[p]);
+                    deficit += Math.Max(0, _patchSlip[p] - own);
+                }
+                share = deficit > 0 ? (float)Math.Min(1, spare / deficit) : 0f;
+            }
             for (int p = 0; p < count; p++)
             {
                 int i = _patchVertex[p];
                 float slip = _patchSlip[p], own = mu * (_pushed[i] + _support[i]) - _held[i], dlt;
-                if (pooled && Resting(body, p, owner, coupling, gravityStep))
+                if (spill && Settled(p))
                 {
-                    dlt = fraction * slip;
+                    float cap = MathF.Max(0f, own);
+                    dlt = slip <= cap ? slip : cap + share * (slip - cap);
+                    if (slip <= cap && slip > 0f) _stuckNow[i] = true;
+                }
+                else if (pooled && Settled(p))
+                {
                     float most = Borrow * MathF.Max(0f, own);
-                    if (dlt > most) dlt = most;
-                    else if (holds) _stuckNow[i] = true;
+                    dlt = MathF.Min(slip, most);
+                    if (slip <= most) _stuckNow[i] = true;
                 }
                 else
                 {
@@ -513,8 +537,8 @@ namespace Fulcrum.SoftBodies
                 Pose pose = world.ShapeWorldPose(shape);
                 ShapeGeometry geometry = s.Geometry[shape];
                 float mu = Combine.Values(body.Friction, s.FrictionCombine[shape], s.Friction[shape], s.FrictionCombine[shape]);
-                // A Newton body at rest: its friction against an immovable shape is held patch by patch.
-                bool patchFriction = still && world.Bodies.Type[owner] != BodyType.Dynamic;
+                // A Newton body's friction against an immovable shape goes patch by patch.
+                bool patchFriction = byVelocity && world.Bodies.Type[owner] != BodyType.Dynamic;
                 int patch = 0;
                 for (int i = 0; i < x.Length; i++)
                 {
@@ -570,7 +594,7 @@ namespace Fulcrum.SoftBodies
                     else if (wb == 0f) _stuckNow[i] = true;
                     Slide(body, i, owner, contact, t, dlt, coupling, h, gravityStep);
                 }
-                if (patch > 0) HoldPatch(body, patch, mu, owner, coupling, h, gravityStep);
+                if (patch > 0) HoldPatch(body, patch, mu, owner, coupling, h, gravityStep, still);
                 // The shape's corners and edges against the surface triangles (a tet body's).
                 if (normal && body.Tets.Length > 0 && geometry.Type != ShapeType.Plane
                     && !(world.Bodies.Type[owner] == BodyType.Dynamic && world.Bodies.Mass[owner] > ShapeFeatureContacts.MaxLoadRatio * body.TotalMass))
