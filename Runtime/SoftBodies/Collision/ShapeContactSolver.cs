@@ -403,28 +403,30 @@ namespace Fulcrum.SoftBodies
         /// <see cref="Coherent"/> times the sum of their lengths), like a rigid solver's manifold
         /// friction, within the cone of them all (mu times the sum of their normal impulses less
         /// the friction they spent):
-        /// - the patch holds (the slips need no more than that cone), the body is at rest (every
-        ///   vertex slower than <see cref="RestingSpeed"/>, <see cref="Still"/>) and at least half
-        ///   of the vertices were stuck in the last substep: every one is held, each by at most
-        ///   <see cref="Borrow"/> times its own cone;
-        /// - the patch slides (the slips need more): each vertex is held within its own cone, and
-        ///   the cone the vertices held whole leave unused goes to those that slip, the same
-        ///   share of each one's excess, so the patch brakes with the cone of them all.
-        /// Otherwise, and for the vertices arriving now, each vertex within its own cone.
+        /// - resting (the slips need no more than that cone, every vertex of the body slower than
+        ///   <see cref="RestingSpeed"/>, <see cref="Still"/>, and at least half of the patch stuck
+        ///   in the last substep): every vertex is held, each by at most <see cref="Borrow"/> times
+        ///   its own cone;
+        /// - otherwise each vertex is held within its own cone, and the cone the vertices held
+        ///   whole leave unused goes to those that slip, the same share of each one's excess (at
+        ///   most <see cref="Borrow"/> times its own cone while the patch as a whole could hold),
+        ///   so a sliding patch brakes with the cone of them all.
+        /// The vertices arriving now, and patches whose slips spread apart (a slab crushed by a
+        /// crate: the ground under its middle cannot hold its edges), take each vertex within its
+        /// own cone.
         /// Per vertex, the normal impulses a Newton step's springs measure (<see cref="Support"/>)
         /// spread over a face unlike the pull along it: resting, the vertices short of load
         /// slipped every substep, downhill only (a cube on a 30 degree slope at mu 0.8 crept
         /// 1.4 cm/s; now at most 0.3 mm/s); sliding, the few vertices carrying a stiff body's load
         /// were held whole by their own cones and the rest of those cones went unused (a cube of
         /// E 1e8 Pa slid on at 10 cm/s down a 20 degree slope at mu 0.5, braking at 74 % of the
-        /// cone; now 5.0 cm/s; bounded at twice each vertex's own cone, 8.9 cm/s). The sliding
-        /// patch brakes a struck corner harder: a nu 0.4999 cube thrown down and across at
-        /// 10 m/s reaches min J 0.46 (0.59 before). The static hold is not for a body in motion (soft fuzz seed 93, a
-        /// 4.8 t body crushing a 3.8 kg box, diverged), for vertices arriving (a nu 0.49 cube
+        /// cone; now 5.1 cm/s). The resting hold is not for a body in motion (soft fuzz seed 93,
+        /// a 4.8 t body crushing a 3.8 kg box, diverged), for vertices arriving (a nu 0.49 cube
         /// thrown at 10 m/s: the vertices beside its struck corner were held by its cone, min J
-        /// 0.21-0.31 against 0.64), for slips spreading apart (a slab crushed by a crate: the
-        /// ground under its middle cannot hold its edges), nor with no bound per vertex (a stiff
-        /// slab holding a landed 1 t crate blew apart in one step, put back).
+        /// 0.21-0.31 against 0.69), nor with no bound per vertex (a stiff slab holding a landed
+        /// 1 t crate blew apart in one step, put back). Sharing out the spare cone only once the
+        /// patch slid as a whole braked a struck corner harder (a nu 0.4999 cube thrown down and
+        /// across at 10 m/s: min J 0.46; 0.62 now, 0.59 with each vertex in its own cone).
         /// </summary>
         void HoldPatch(SoftBody body, int count, float mu, int owner, RigidCoupling coupling, float h, Vector3 gravityStep, bool still)
         {
@@ -444,7 +446,7 @@ namespace Fulcrum.SoftBodies
             bool coherent = members > 0 && net.Length() >= Coherent * need;
             bool holds = need <= cone;
             bool pooled = coherent && holds && still && 2 * stuck >= members;
-            bool spill = coherent && !holds;
+            bool spill = coherent && !pooled;
             float share = 0f;
             if (spill)
             {
@@ -467,6 +469,7 @@ namespace Fulcrum.SoftBodies
                 {
                     float cap = MathF.Max(0f, own);
                     dlt = slip <= cap ? slip : cap + share * (slip - cap);
+                    if (holds) dlt = MathF.Min(dlt, Borrow * cap);
                     if (slip <= cap && slip > 0f) _stuckNow[i] = true;
                 }
                 else if (pooled && Settled(p))

@@ -16,7 +16,7 @@ namespace Fulcrum.Tests.Robustness
     /// (<c>fulcrum fuzz --soft --count 1 --seed N</c>).
     /// <para>
     /// Known and not yet fixed (seeds 0-199): 6 worlds diverge (reported), 2 gain energy and 1
-    /// ends with an inverted element; seeds 200-399: 3, 4 and 2; seeds 400-599: 3, 1 and 1
+    /// ends with an inverted element; seeds 200-399: 2, 4 and 3; seeds 400-599: 4, 0 and 1
     /// (Documentation~/SoftSolvers.md keeps the history). Before the Newton solver took
     /// attached rigid bodies into its step, its energy guard counted the rigid bodies it moves
     /// and a pinned body's step started from the substep's start, 19, 3 and 4, and 21, 2 and 1
@@ -47,10 +47,10 @@ namespace Fulcrum.Tests.Robustness
         // Then a Newton body's friction reached the vertices its springs hold at the collision
         // radius and went patch by patch (a resting patch held as one, a sliding one braking
         // with the cone of all its vertices; kinetic friction had been 5-27 % weak and a resting
-        // cube crept): seeds 21, 47 and 77 pass, 93 diverges again, 94 ends inverted where it
-        // diverged: 1/0/1 -> 0/0/0 and 3/1/0 -> 3/0/1.
-        [TestCase(0, 50, 0, 0, 0)]
-        [TestCase(50, 50, 3, 0, 1)]
+        // cube crept): seeds 21 and 77 pass, 94 ends inverted where it diverged: 1/0/1 -> 1/0/0
+        // and 3/1/0 -> 2/0/1 (over seeds 0-599 the failing worlds went from 24 to 23).
+        [TestCase(0, 50, 1, 0, 0)]
+        [TestCase(50, 50, 2, 0, 1)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
             var failures = new List<string>();
