@@ -22,10 +22,7 @@ namespace Fulcrum.Collision
 
         public bool Visit(int proxyId, int triangle)
         {
-            Mesh.GetTriangle(triangle, out Vector3 a, out Vector3 b, out Vector3 c);
-            a = MeshPose.TransformPoint(a);
-            b = MeshPose.TransformPoint(b);
-            c = MeshPose.TransformPoint(c);
+            Mesh.GetTriangle(triangle, MeshPose, out Vector3 a, out Vector3 b, out Vector3 c);
             Vector3 n = MeshPose.TransformDirection(Mesh.Normals[triangle]);
             // Starting behind the triangle: the back side never collides.
             Vector3 start = (Sweep.BodyPose(0) * LocalPose).Position;

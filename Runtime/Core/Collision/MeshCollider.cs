@@ -29,8 +29,7 @@ namespace Fulcrum.Collision
 
             public bool Visit(int proxyId, int triangle)
             {
-                Mesh.GetTriangle(triangle, out Vector3 a, out Vector3 b, out Vector3 c);
-                if (!Bounds.Overlaps(Aabb.OfTriangle(a, b, c))) return true;
+                if (!Mesh.TriangleOverlaps(Bounds, triangle, out _, out _, out _)) return true;
                 int before = Output.PointCount;
                 TriangleContact(Convex, Mesh, triangle, Output);
                 uint salt = (uint)triangle * 0x9E3779B1u;

@@ -320,11 +320,14 @@ namespace Fulcrum.Scenes
                 if (j.BreakForce is float force) Positive(force, P(path, "breakForce"));
                 if (j.BreakTorque is float torque) Positive(torque, P(path, "breakTorque"));
                 if (j.FrictionTorque is float friction) NonNegative(friction, P(path, "frictionTorque"));
+                if (j is SceneAxisPairJoint axes)
+                {
+                    Axis(axes.AxisA, P(path, "axisA"));
+                    Axis(axes.AxisB, P(path, "axisB"));
+                }
                 switch (j)
                 {
                     case SceneHingeJoint h:
-                        Axis(h.AxisA, P(path, "axisA"));
-                        Axis(h.AxisB, P(path, "axisB"));
                         if (h.LowerDeg is float lo) InRange(lo, -180, 180, P(path, "lowerDeg"));
                         if (h.UpperDeg is float hi) InRange(hi, -180, 180, P(path, "upperDeg"));
                         if (h.LowerDeg > h.UpperDeg) Error(P(path, "upperDeg"), $"must be >= lowerDeg ({F(h.LowerDeg!.Value)}), got {F(h.UpperDeg!.Value)}");
@@ -345,8 +348,6 @@ namespace Fulcrum.Scenes
                         if (p.Lower > p.Upper) Error(P(path, "upper"), $"must be >= lower ({F(p.Lower!.Value)}), got {F(p.Upper!.Value)}");
                         break;
                     case SceneConeTwistJoint c:
-                        Axis(c.AxisA, P(path, "axisA"));
-                        Axis(c.AxisB, P(path, "axisB"));
                         InRange(c.ConeDeg, 0, 180, P(path, "coneDeg"));
                         InRange(c.TwistDeg, 0, 180, P(path, "twistDeg"));
                         break;

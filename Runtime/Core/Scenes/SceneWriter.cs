@@ -113,10 +113,10 @@ namespace Fulcrum.Scenes
             o.Add("bodyA", j.BodyA != null ? JsonValue.From(j.BodyA) : JsonValue.Null());
             o.Add("bodyB", j.BodyB != null ? JsonValue.From(j.BodyB) : JsonValue.Null());
             o.Add("anchorA", j.AnchorA).Add("anchorB", j.AnchorB);
+            if (j is SceneAxisPairJoint axes) o.Add("axisA", axes.AxisA).Add("axisB", axes.AxisB);
             switch (j)
             {
                 case SceneHingeJoint h:
-                    o.Add("axisA", h.AxisA).Add("axisB", h.AxisB);
                     o.AddIfSet("lowerDeg", h.LowerDeg);
                     o.AddIfSet("upperDeg", h.UpperDeg);
                     o.AddUnless("motorSpeed", h.MotorSpeed, 0);
@@ -134,7 +134,7 @@ namespace Fulcrum.Scenes
                     o.AddIfSet("upper", p.Upper);
                     break;
                 case SceneConeTwistJoint c:
-                    o.Add("axisA", c.AxisA).Add("axisB", c.AxisB).Add("coneDeg", c.ConeDeg).Add("twistDeg", c.TwistDeg);
+                    o.Add("coneDeg", c.ConeDeg).Add("twistDeg", c.TwistDeg);
                     break;
             }
             o.AddIfSet("breakForce", j.BreakForce);

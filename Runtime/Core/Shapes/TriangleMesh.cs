@@ -104,5 +104,24 @@ namespace Fulcrum
             b = Vertices[Indices[3 * t + 1]];
             c = Vertices[Indices[3 * t + 2]];
         }
+
+        // Triangle t placed at pose (mesh frame to world), for the users that work in world
+        // space (continuous collision, debug drawing).
+        internal void GetTriangle(int t, in Pose pose, out Vector3 a, out Vector3 b, out Vector3 c)
+        {
+            GetTriangle(t, out a, out b, out c);
+            a = pose.TransformPoint(a);
+            b = pose.TransformPoint(b);
+            c = pose.TransformPoint(c);
+        }
+
+        // Triangle t (mesh frame), and whether its own bounds overlap box: a BVH leaf's box is
+        // fattened, so the queries that gather contacts from its candidates drop here the ones
+        // that only the fat box reaches.
+        internal bool TriangleOverlaps(in Aabb box, int t, out Vector3 a, out Vector3 b, out Vector3 c)
+        {
+            GetTriangle(t, out a, out b, out c);
+            return box.Overlaps(Aabb.OfTriangle(a, b, c));
+        }
     }
 }

@@ -78,10 +78,7 @@ namespace Fulcrum
                     var mesh = (TriangleMesh)g.Data!;
                     for (int t = 0; t < mesh.TriangleCount; t++)
                     {
-                        mesh.GetTriangle(t, out Vector3 a, out Vector3 b, out Vector3 c);
-                        a = pose.TransformPoint(a);
-                        b = pose.TransformPoint(b);
-                        c = pose.TransformPoint(c);
+                        mesh.GetTriangle(t, pose, out Vector3 a, out Vector3 b, out Vector3 c);
                         buffer.AddLine(a, b, color);
                         buffer.AddLine(b, c, color);
                         buffer.AddLine(c, a, color);

@@ -40,8 +40,7 @@ namespace Fulcrum.SoftBodies
 
             public bool Visit(int proxyId, int triangle)
             {
-                Mesh.GetTriangle(triangle, out Vector3 a, out Vector3 b, out Vector3 c);
-                if (!Box.Overlaps(Aabb.OfTriangle(a, b, c))) return true;
+                if (!Mesh.TriangleOverlaps(Box, triangle, out Vector3 a, out Vector3 b, out Vector3 c)) return true;
                 Vector3 n = Mesh.Normals[triangle];
                 // Already behind the one-sided triangle when the step starts: the back side.
                 if (Vector3.Dot(n, Start - a) < -Radius) return true;

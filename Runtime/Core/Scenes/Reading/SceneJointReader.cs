@@ -19,15 +19,12 @@ namespace Fulcrum.Scenes
                     joint = new SceneFixedJoint();
                     break;
                 case JointKind.Hinge:
-                    joint = new SceneHingeJoint
-                    {
-                        AxisA = r.Vector("axisA", Vector3.Zero, required: true),
-                        AxisB = r.Vector("axisB", Vector3.Zero, required: true),
-                        LowerDeg = r.OptionalFloat("lowerDeg"),
-                        UpperDeg = r.OptionalFloat("upperDeg"),
-                        MotorSpeed = r.Float("motorSpeed", 0),
-                        MaxMotorTorque = r.Float("maxMotorTorque", 0),
-                    };
+                    var hinge = WithAxes<SceneHingeJoint>(r);
+                    hinge.LowerDeg = r.OptionalFloat("lowerDeg");
+                    hinge.UpperDeg = r.OptionalFloat("upperDeg");
+                    hinge.MotorSpeed = r.Float("motorSpeed", 0);
+                    hinge.MaxMotorTorque = r.Float("maxMotorTorque", 0);
+                    joint = hinge;
                     break;
                 case JointKind.Distance:
                     joint = new SceneDistanceJoint
@@ -47,13 +44,10 @@ namespace Fulcrum.Scenes
                     };
                     break;
                 default:
-                    joint = new SceneConeTwistJoint
-                    {
-                        AxisA = r.Vector("axisA", Vector3.Zero, required: true),
-                        AxisB = r.Vector("axisB", Vector3.Zero, required: true),
-                        ConeDeg = r.Float("coneDeg", 0, required: true),
-                        TwistDeg = r.Float("twistDeg", 0, required: true),
-                    };
+                    var cone = WithAxes<SceneConeTwistJoint>(r);
+                    cone.ConeDeg = r.Float("coneDeg", 0, required: true);
+                    cone.TwistDeg = r.Float("twistDeg", 0, required: true);
+                    joint = cone;
                     break;
             }
             joint.Name = r.String("name");
@@ -70,6 +64,14 @@ namespace Fulcrum.Scenes
             r.Finish();
             return joint;
         }
+
+        // A kind with an axis in each body's frame, its axisA and axisB read first (as for
+        // every joint kind, the kind's own fields come before the common ones).
+        static T WithAxes<T>(JsonObjectReader r) where T : SceneAxisPairJoint, new() => new T
+        {
+            AxisA = r.Vector("axisA", Vector3.Zero, required: true),
+            AxisB = r.Vector("axisB", Vector3.Zero, required: true),
+        };
 
         static string? BodyName(JsonValue joint, string key, SceneDiagnostics d)
         {

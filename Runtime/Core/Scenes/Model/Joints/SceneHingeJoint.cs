@@ -1,21 +1,13 @@
-using System.Numerics;
-
 namespace Fulcrum.Scenes
 {
     /// <summary>
     /// <c>{"type": "hinge", "axisA", "axisB", "lowerDeg", "upperDeg", "motorSpeed", "maxMotorTorque"}</c>:
     /// anchors coincide and axis A (in A's frame) stays aligned with axis B (in B's frame).
     /// </summary>
-    public sealed class SceneHingeJoint : SceneJoint
+    public sealed class SceneHingeJoint : SceneAxisPairJoint
     {
         /// <inheritdoc/>
         public override JointKind Type => JointKind.Hinge;
-
-        /// <summary><c>axisA</c>: the hinge axis in A's frame, non-zero. Required.</summary>
-        public Vector3 AxisA { get; set; }
-
-        /// <summary><c>axisB</c>: the hinge axis in B's frame, non-zero. Required.</summary>
-        public Vector3 AxisB { get; set; }
 
         /// <summary><c>lowerDeg</c>: lower angle limit, degrees, in [-180, 180]; null: no lower limit.</summary>
         public float? LowerDeg { get; set; }
