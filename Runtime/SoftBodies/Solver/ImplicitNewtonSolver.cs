@@ -113,6 +113,8 @@ namespace Fulcrum.SoftBodies
             _heldStiffness = new double[_n];
         }
 
+        // Whether the last Factor needed a diagonal shift (the matrix was not positive definite).
+        bool _shifted;
         ref double At(int row, int col) => ref _matrix[row * (_band + 1) + col - row + _band];
 
         /// <summary>One Newton step towards the minimum of G for a substep of <paramref name="h"/> with inertial targets <paramref name="y"/>.</summary>
@@ -128,6 +130,92 @@ namespace Fulcrum.SoftBodies
             Array.Clear(_overlapping, 0, _n);
             BeginAttachments(body, x, y, invH2);
             StartFromPrevious(body, x, y, invH2);
+            Assemble(body, y, h, invH2, coupling, false);
+            for (int k = 0; k < _dofs; k++) _gradient[k] = -_rhs[k];
+            bool factored = Factor();
+            if (factored && _shifted)
+            {
+                // The exact Hessian is indefinite beyond what the inertia holds: assembled again
+                // with each element's tangent made definite (DefiniteTangent), not shifted.
+                Assemble(body, y, h, invH2, coupling, true);
+                for (int k = 0; k < _dofs; k++) _gradient[k] = -_rhs[k];
+                factored = Factor();
+            }
+            if (!factored)
+            {
+                PushBodies(body, x, h, coupling); // no step from a matrix that cannot be factored: keep x
+                return;
+            }
+            Solve(_rhs, 0);
+            if (_bodyCount > 0 && !SolveBodies())
+            {
+                PushBodies(body, x, h, coupling); // the bodies' system is singular: keep x
+                return;
+            }
+
+            // Backtracking (Armijo) on G: a full Newton step on a non-convex energy can overshoot
+            // into an inverted state (a jelly hitting the ground exploded without it).
+            double slope = 0;
+            for (int k = 0; k < _dofs; k++) slope += _gradient[k] * _rhs[k];
+            if (_bodyCount > 0) slope += BodySlope();
+            if (!(slope < 0))
+            {
+                PushBodies(body, x, h, coupling); // not a descent direction (round-off at a minimum): keep x
+                return;
+            }
+            double g0 = Energy(body, x, y, invH2);
+            // A trust region: no vertex moves more than a quarter of the shortest edge in one
+            // step, so a step cannot jump a tet through inversion (with lambda in the thousands
+            // of mu, float positions make G too coarse for the line search alone to stop it). A
+            // step that goes further is damped first (Damp), and what is still too long scaled.
+            double largest = LargestMove(out double rms);
+            if (largest > _reach && _bodyCount == 0 && largest > Outlier * rms)
+            {
+                if (!Damp(body, invH2, ref largest))
+                {
+                    PushBodies(body, x, h, coupling);
+                    return;
+                }
+                slope = 0;
+                for (int k = 0; k < _dofs; k++) slope += _gradient[k] * _rhs[k];
+            }
+            if (_bodyCount > 0) largest = Math.Max(largest, LargestCarried());
+            double step = largest > _reach ? _reach / largest : 1, taken = 0;
+            for (int tries = 0; tries < 12; tries++, step *= 0.5)
+            {
+                for (int i = 0; i < _n; i++)
+                {
+                    int r = 3 * _order[i];
+                    _trial[i] = _fixed[i] ? x[i] : x[i] + (float)step * new Vector3((float)_rhs[r], (float)_rhs[r + 1], (float)_rhs[r + 2]);
+                }
+                if (_bodyCount > 0) CarryTrial(x, (float)step);
+                double g = Energy(body, _trial, y, invH2) + (_bodyCount > 0 ? BodyEnergy(step, invH2) : 0);
+                if (g <= g0 + 1e-4 * step * slope)
+                {
+                    Array.Copy(_trial, x, _n);
+                    if (_bodyCount > 0) PushCarriers((float)step, h, coupling);
+                    taken = step;
+                    break;
+                }
+            }
+            KeepMomentum(body, x, y, (float)taken, h, coupling);
+            PushBodies(body, x, h, coupling);
+            ReportSupport(body, x, y, h);
+        }
+
+        /// <summary>
+        /// Assembles the Newton system at the current positions: inertia, the elements' gradient
+        /// and Hessian (each element's tangent made definite when <paramref name="project"/>),
+        /// the springs to immovable shapes, the shares of dynamic bodies, the attached bodies'
+        /// coupling, other soft bodies, and the Dirichlet rows.
+        /// </summary>
+        void Assemble(SoftBody body, Vector3[] y, float h, double invH2, RigidCoupling coupling, bool project)
+        {
+            Vector3[] x = body.X, xStart = body.XPrev;
+            float[] m = body.M;
+            _overlaps = 0;
+            _helds = 0;
+            Array.Clear(_overlapping, 0, _n);
             Array.Clear(_matrix, 0, _matrix.Length);
             Array.Clear(_rhs, 0, _rhs.Length);
             double damping = body.DampingTime > 0f ? body.DampingTime / (double)h : 0.0;
@@ -169,6 +257,7 @@ namespace Fulcrum.SoftBodies
                 double volume = t.RestVolume;
                 _tangent.Stress(f, p);
                 _tangent.Tangent(f, c);
+                if (project) DefiniteTangent.Project(c);
                 for (int a = 0; a < 4; a++)
                 {
                     int ra = 3 * _order[v[a]];
@@ -304,68 +393,6 @@ namespace Fulcrum.SoftBodies
                 int r = 3 * _order[i];
                 for (int k = 0; k < 3; k++) Pin(r + k);
             }
-
-            for (int k = 0; k < _dofs; k++) _gradient[k] = -_rhs[k];
-            if (!Factor())
-            {
-                PushBodies(body, x, h, coupling); // no step from a matrix that cannot be factored: keep x
-                return;
-            }
-            Solve(_rhs, 0);
-            if (_bodyCount > 0 && !SolveBodies())
-            {
-                PushBodies(body, x, h, coupling); // the bodies' system is singular: keep x
-                return;
-            }
-
-            // Backtracking (Armijo) on G: a full Newton step on a non-convex energy can overshoot
-            // into an inverted state (a jelly hitting the ground exploded without it).
-            double slope = 0;
-            for (int k = 0; k < _dofs; k++) slope += _gradient[k] * _rhs[k];
-            if (_bodyCount > 0) slope += BodySlope();
-            if (!(slope < 0))
-            {
-                PushBodies(body, x, h, coupling); // not a descent direction (round-off at a minimum): keep x
-                return;
-            }
-            double g0 = Energy(body, x, y, invH2);
-            // A trust region: no vertex moves more than a quarter of the shortest edge in one
-            // step, so a step cannot jump a tet through inversion (with lambda in the thousands
-            // of mu, float positions make G too coarse for the line search alone to stop it). A
-            // step that goes further is damped first (Damp), and what is still too long scaled.
-            double largest = LargestMove(out double rms);
-            if (largest > _reach && _bodyCount == 0 && largest > Outlier * rms)
-            {
-                if (!Damp(body, invH2, ref largest))
-                {
-                    PushBodies(body, x, h, coupling);
-                    return;
-                }
-                slope = 0;
-                for (int k = 0; k < _dofs; k++) slope += _gradient[k] * _rhs[k];
-            }
-            if (_bodyCount > 0) largest = Math.Max(largest, LargestCarried());
-            double step = largest > _reach ? _reach / largest : 1, taken = 0;
-            for (int tries = 0; tries < 12; tries++, step *= 0.5)
-            {
-                for (int i = 0; i < _n; i++)
-                {
-                    int r = 3 * _order[i];
-                    _trial[i] = _fixed[i] ? x[i] : x[i] + (float)step * new Vector3((float)_rhs[r], (float)_rhs[r + 1], (float)_rhs[r + 2]);
-                }
-                if (_bodyCount > 0) CarryTrial(x, (float)step);
-                double g = Energy(body, _trial, y, invH2) + (_bodyCount > 0 ? BodyEnergy(step, invH2) : 0);
-                if (g <= g0 + 1e-4 * step * slope)
-                {
-                    Array.Copy(_trial, x, _n);
-                    if (_bodyCount > 0) PushCarriers((float)step, h, coupling);
-                    taken = step;
-                    break;
-                }
-            }
-            KeepMomentum(body, x, y, (float)taken, h, coupling);
-            PushBodies(body, x, h, coupling);
-            ReportSupport(body, x, y, h);
         }
 
         /// <summary>
@@ -630,13 +657,15 @@ namespace Fulcrum.SoftBodies
 
         // Band Cholesky in place (lower triangle); on a non-positive pivot the diagonal is shifted
         // (Levenberg: 1e-10 of the largest diagonal, x4 per retry, at most MaxShifts times) and
-        // the factorisation restarts. False when the matrix has no finite positive diagonal or
+        // the factorisation restarts (Step then assembles again with definite element tangents
+        // and factors that; _shifted says whether a shift was needed). False when the matrix has no finite positive diagonal or
         // is still not factored after the last shift (a non-finite entry): the step is skipped.
         // Before, the retries were unbounded, and a matrix with a NaN (or a zero diagonal, which
         // made every shift zero) hung the step for good (soft fuzz seed 3: a Newton beam at
         // E 1e9 Pa, nu 0.4999).
         bool Factor()
         {
+            _shifted = false;
             Array.Copy(_matrix, _saved, _matrix.Length);
             double largest = 0;
             for (int i = 0; i < _dofs; i++) largest = Math.Max(largest, At(i, i));
@@ -646,6 +675,7 @@ namespace Fulcrum.SoftBodies
             {
                 if (tries == MaxShifts) return false;
                 shift = shift == 0 ? 1e-10 * largest : 4 * shift;
+                _shifted = true;
                 Array.Copy(_saved, _matrix, _matrix.Length);
                 for (int i = 0; i < _dofs; i++) At(i, i) += shift;
             }
