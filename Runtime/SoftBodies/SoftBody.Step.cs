@@ -237,7 +237,7 @@ namespace Fulcrum.SoftBodies
             {
                 NewtonSolver!.Step(this, _target, h, coupling);
                 if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
-                if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
+                if (Attachments.Length > 0) AttachmentSolver.SolveEach(World, Attachments, X, W, h, coupling);
                 // After the contacts, as the XPBD pass's floor comes after them: what a heavy body
                 // pressed on the tets is taken back before the next Newton step sees it.
                 if (Tets.Length > 0) VolumeFloor.HoldAll(TetData, X, 0, Tets.Length);
