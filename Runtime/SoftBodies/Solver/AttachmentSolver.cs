@@ -111,7 +111,7 @@ namespace Fulcrum.SoftBodies
             if (!(b.InverseInertiaWorld[slot] + Mat3.Diagonal(locked)).TryInvert(out Mat3 inertia)) return;
             for (int c = 0; c < 3; c++) a[7 * c] += mass;
             for (int row = 0; row < 3; row++)
-                for (int col = 0; col < 3; col++) a[6 * (3 + row) + 3 + col] += Entry(inertia, row, col);
+                for (int col = 0; col < 3; col++) a[6 * (3 + row) + 3 + col] += inertia[row, col];
             AxisLocks locks = b.Locks[slot];
             for (int dof = 0; dof < 6; dof++)
             {
@@ -120,7 +120,8 @@ namespace Fulcrum.SoftBodies
                 a[7 * dof] = 1;
                 q[dof] = 0;
             }
-            if (!SolveSymmetric6(a, q)) return;
+            if (!DenseCholesky.Factor(a, 6)) return;
+            DenseCholesky.Solve(a, 6, q);
             Vector3 move = new Vector3((float)q[0], (float)q[1], (float)q[2]), turn = new Vector3((float)q[3], (float)q[4], (float)q[5]);
             Vector3 linear = Vector3.Zero, angular = Vector3.Zero;
             for (int k = start; k < end; k++)
@@ -159,43 +160,6 @@ namespace Fulcrum.SoftBodies
             a[33] -= m * z * x; a[34] -= m * z * y; a[35] += m * (rr - z * z);
         }
 
-        // Solves the symmetric positive definite 6 x 6 system a q = rhs in place (Cholesky); false when not definite.
-        static bool SolveSymmetric6(Span<double> a, Span<double> rhs)
-        {
-            for (int k = 0; k < 6; k++)
-            {
-                double d = a[7 * k];
-                for (int s = 0; s < k; s++) d -= a[6 * k + s] * a[6 * k + s];
-                if (!(d > 0)) return false;
-                d = Math.Sqrt(d);
-                a[7 * k] = d;
-                for (int i = k + 1; i < 6; i++)
-                {
-                    double v = a[6 * i + k];
-                    for (int s = 0; s < k; s++) v -= a[6 * i + s] * a[6 * k + s];
-                    a[6 * i + k] = v / d;
-                }
-            }
-            for (int i = 0; i < 6; i++)
-            {
-                double v = rhs[i];
-                for (int s = 0; s < i; s++) v -= a[6 * i + s] * rhs[s];
-                rhs[i] = v / a[7 * i];
-            }
-            for (int i = 5; i >= 0; i--)
-            {
-                double v = rhs[i];
-                for (int s = i + 1; s < 6; s++) v -= a[6 * s + i] * rhs[s];
-                rhs[i] = v / a[7 * i];
-            }
-            return true;
-        }
-
-        static float Entry(in Mat3 m, int row, int col)
-        {
-            Vector3 c = col == 0 ? m.C0 : col == 1 ? m.C1 : m.C2;
-            return row == 0 ? c.X : row == 1 ? c.Y : c.Z;
-        }
 
         /// <summary>Where attachment <paramref name="a"/>'s body holds its vertex now; false when the body was destroyed.</summary>
         public static bool Anchor(BodyStorage b, in Attachment a, out Vector3 anchor)

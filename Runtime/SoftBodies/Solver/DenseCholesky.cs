@@ -5,12 +5,13 @@ namespace Fulcrum.SoftBodies
     /// <summary>
     /// Cholesky factorisation of a small dense symmetric matrix, row-major n x n, in place
     /// (L in the lower triangle), and the solve with it. Used by the static-equilibrium
-    /// reference and by the Newton solver's Schur complement on attached bodies.
+    /// reference, the Newton solver's Schur complement on attached bodies, and the block
+    /// projection of a body's attachments (on the stack: spans).
     /// </summary>
     internal static class DenseCholesky
     {
         /// <summary>Factors <paramref name="a"/> = L L^T in place; false on a non-positive pivot (not positive definite).</summary>
-        public static bool Factor(double[] a, int n)
+        public static bool Factor(Span<double> a, int n)
         {
             for (int k = 0; k < n; k++)
             {
@@ -30,7 +31,7 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>Solves L L^T x = <paramref name="b"/> in place with the factor <paramref name="l"/> from <see cref="Factor"/>.</summary>
-        public static void Solve(double[] l, int n, double[] b)
+        public static void Solve(ReadOnlySpan<double> l, int n, Span<double> b)
         {
             for (int i = 0; i < n; i++)
             {

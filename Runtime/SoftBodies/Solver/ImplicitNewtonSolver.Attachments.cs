@@ -278,7 +278,7 @@ namespace Fulcrum.SoftBodies
                 for (int c = 0; c < 3; c++) _schur[(o + c) * size + o + c] += _bodyMass[beta] * invH2;
                 for (int a = 0; a < 3; a++)
                     for (int c = 0; c < 3; c++)
-                        _schur[(o + 3 + a) * size + o + 3 + c] += Entry(_bodyInertia[beta], a, c) * invH2;
+                        _schur[(o + 3 + a) * size + o + 3 + c] += _bodyInertia[beta][a, c] * invH2;
                 // Locked axes: the body does not move along them.
                 AxisLocks locks = b.Locks[_bodies[beta]];
                 for (int d = 0; d < 6; d++)
@@ -414,11 +414,5 @@ namespace Fulcrum.SoftBodies
         Vector3 BodyMove(int beta) => new Vector3((float)_q[6 * beta], (float)_q[6 * beta + 1], (float)_q[6 * beta + 2]);
 
         Vector3 BodyTurn(int beta) => new Vector3((float)_q[6 * beta + 3], (float)_q[6 * beta + 4], (float)_q[6 * beta + 5]);
-
-        static float Entry(in Mat3 m, int row, int col)
-        {
-            Vector3 c = col == 0 ? m.C0 : col == 1 ? m.C1 : m.C2;
-            return row == 0 ? c.X : row == 1 ? c.Y : c.Z;
-        }
     }
 }
