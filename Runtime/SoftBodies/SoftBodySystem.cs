@@ -98,7 +98,8 @@ namespace Fulcrum.SoftBodies
         /// <summary>
         /// Raised (on the stepping thread) for a soft body whose vertices became non-finite or left
         /// the world bounds (±<see cref="Limits.MaxPosition"/> m), or that blew apart (a tet's
-        /// volume changed more than <see cref="SoftBody.MaxVolumeRatio"/> times), in a step, with the step index:
+        /// volume ratio went beyond <see cref="SoftBody.MaxVolumeRatio"/>, growing more than
+        /// <see cref="SoftBody.BlowUpGrowth"/> times in the step), in a step, with the step index:
         /// the body was put back at its pose from the start of that step, at rest.
         /// </summary>
         public event Action<SoftBodyHandle, long>? Diverged;
