@@ -102,6 +102,39 @@ namespace Fulcrum.Tests.Robustness
             Assert.That(system.DivergenceCount, Is.EqualTo(1));
         }
 
+        // A very soft block (E 1e3 Pa, nu 0) held at one end and drawn out at 1 m/s by a
+        // kinematic body at the other: its tets pass tenfold their volume a few percent a step.
+        // That is a stretch, not an explosion (which grows the volume ratio by orders of magnitude
+        // a step): the body must keep stretching, not be put back at rest. Before the growth rule
+        // (SoftBody.BlowUpGrowth) it was reported as blown apart and frozen once a tet passed 10.
+        [Test]
+        public void A_soft_body_drawn_out_past_tenfold_volume_slowly_is_not_reported_as_blown_apart()
+        {
+            var w = new World();
+            w.Gravity = Vector3.Zero;
+            BodyDef mover = BodyDef.Kinematic(new Vector3(0.1f, 0, 0));
+            mover.LinearVelocity = new Vector3(1f, 0, 0);
+            BodyHandle handle = w.CreateBody(mover);
+            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.2f, 0.1f, 0.1f), 2, 1, 1), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e3f, 0f, 1000f), Vector3.Zero);
+            def.Pins = new[] { SoftPin.ToWorld(new Vector3(-0.2f, -1, -1), new Vector3(-0.09f, 1, 1)), SoftPin.ToBody(new Vector3(0.09f, -1, -1), new Vector3(0.2f, 1, 1), handle) };
+            SoftBodyHandle block = w.CreateSoftBody(def);
+            SoftBody body = w.GetSoftBody(block);
+            SoftBodySystem system = SoftBodySystem.Of(w)!;
+            var j = new float[body.ElementCount];
+            float largest = 0;
+            for (int n = 0; n < 150; n++)
+            {
+                w.Step(1 / 60f);
+                body.ComputeElementJ(j);
+                foreach (float x in j) largest = MathF.Max(largest, MathF.Abs(x));
+            }
+            float reach = body.X.Max(x => x.X);
+            TestContext.Out.WriteLine($"largest |J| {largest:F1}, far end at x = {reach:F2} m, handle at {w.GetBody(handle).Position.X:F2} m, divergences {system.DivergenceCount}");
+            Assert.That(largest, Is.GreaterThan(SoftBody.MaxVolumeRatio), "the tets did pass tenfold");
+            Assert.That(system.DivergenceCount, Is.Zero);
+            Assert.That(reach, Is.GreaterThan(2f), "still held by the handle, 2.6 m out");
+        }
+
         // A 0.5 m jelly cube settled on the ground for 20 steps.
         static (World, SoftBodyHandle) JellyOnGround()
         {
