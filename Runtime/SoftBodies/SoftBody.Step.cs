@@ -252,6 +252,9 @@ namespace Fulcrum.SoftBodies
             for (int iteration = 0; iteration < Iterations; iteration++)
             {
                 NewtonSolver!.Step(this, _target, h, coupling);
+                // A vertex the step took into a shape is held by the next step's overlap spring
+                // rather than pushed out alone by the contact pass (ImplicitNewtonSolver.Entered).
+                if (NewtonSolver.Entered(this, ImplicitNewtonSolver.EnterTolerance)) NewtonSolver.Step(this, _target, h, coupling);
                 if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
                 if (Attachments.Length > 0) AttachmentSolver.SolveEach(World, Attachments, X, W, h, coupling);
                 // After the contacts, as the XPBD pass's floor comes after them: what a heavy body
