@@ -73,10 +73,13 @@ namespace Fulcrum.SoftBodies
                     if (nearFloor) VolumeFloor.Hold(tets, e, x);
                     continue;
                 }
-                if (typeof(TModel) != typeof(StableNeoHookeanEnergy)) LimitReach(tets, e, w0, w1, w2, w3, d0, d1, d2, d3, h0, h1, h2, h3, ref dlD, ref dlH);
+                Vector3 g0 = dlD * d0 + dlH * h0, g1 = dlD * d1 + dlH * h1, g2 = dlD * d2 + dlH * h2, g3 = dlD * d3 + dlH * h3;
+                if (typeof(TModel) != typeof(StableNeoHookeanEnergy) && LimitReach(tets.RestVolume[e], w0 * g0, w1 * g1, w2 * g2, w3 * g3, ref dlD, ref dlH))
+                {
+                    g0 = dlD * d0 + dlH * h0; g1 = dlD * d1 + dlH * h1; g2 = dlD * d2 + dlH * h2; g3 = dlD * d3 + dlH * h3;
+                }
                 lambda.X += dlD;
                 lambda.Y += dlH;
-                Vector3 g0 = dlD * d0 + dlH * h0, g1 = dlD * d1 + dlH * h1, g2 = dlD * d2 + dlH * h2, g3 = dlD * d3 + dlH * h3;
                 TorqueFree.ProjectIfFree(a, b, c, d, xPrev, m, free, ref g0, ref g1, ref g2, ref g3);
                 x[a] = x0 + w0 * g0;
                 x[b] = x1 + w1 * g1;
@@ -87,7 +90,8 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>
-        /// The classic energy's trust region: the tet's correction is scaled down so that no
+        /// The classic energy's trust region (true when it scaled the multipliers' update down,
+        /// from the vertices' moves <paramref name="move0"/>..<paramref name="move3"/>): the tet's correction is scaled down so that no
         /// vertex moves further than half the tet's size, cbrt(6 V_rest) (the cell edge of a
         /// box mesh). Below J = <see cref="NeoHookeanEnergy.MinJ"/> its ln J is continued by a
         /// line of slope 1 / MinJ, and a tet crushed there (or inverted) gets deviatoric and
@@ -98,17 +102,15 @@ namespace Fulcrum.SoftBodies
         /// substeps (soft fuzz seed 639). The stable energy's constraints stay moderate there (J - 1
         /// and sqrt(I_C - 3)), and it is left exactly as it was (its wide kernels match).
         /// </summary>
-        static void LimitReach(TetStream tets, int e, float w0, float w1, float w2, float w3, Vector3 d0, Vector3 d1, Vector3 d2, Vector3 d3,
-            Vector3 h0, Vector3 h1, Vector3 h2, Vector3 h3, ref float dlD, ref float dlH)
+        static bool LimitReach(float restVolume, Vector3 move0, Vector3 move1, Vector3 move2, Vector3 move3, ref float dlD, ref float dlH)
         {
-            float m0 = w0 * w0 * (dlD * d0 + dlH * h0).LengthSquared(), m1 = w1 * w1 * (dlD * d1 + dlH * h1).LengthSquared();
-            float m2 = w2 * w2 * (dlD * d2 + dlH * h2).LengthSquared(), m3 = w3 * w3 * (dlD * d3 + dlH * h3).LengthSquared();
-            float most = MathF.Sqrt(MathF.Max(MathF.Max(m0, m1), MathF.Max(m2, m3)));
-            float reach = 0.5f * MathF.Cbrt(6f * tets.RestVolume[e]);
-            if (!(most > reach)) return;
+            float most = MathF.Sqrt(MathF.Max(MathF.Max(move0.LengthSquared(), move1.LengthSquared()), MathF.Max(move2.LengthSquared(), move3.LengthSquared())));
+            float reach = 0.5f * MathF.Cbrt(6f * restVolume);
+            if (!(most > reach)) return false;
             float scale = reach / most;
             dlD *= scale;
             dlH *= scale;
+            return true;
         }
 
         /// <summary>Dm^-1 of element <paramref name="e"/> from the stream's columns.</summary>
