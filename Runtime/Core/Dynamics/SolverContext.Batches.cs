@@ -17,26 +17,8 @@ namespace Fulcrum.Dynamics
         /// </summary>
         public void Prepare(IslandBuilder islands, bool wide = false, bool keepRows = false)
         {
-            BodyStorage s = _storage;
             Bodies[0] = new SolverBody { DeltaRotation = Quaternion.Identity };
-            Vector3 gravity = _settings.Gravity;
-            for (int k = 1; k < BodyCount; k++)
-            {
-                int i = BodySlot[k];
-                bool dynamic = s.Type[i] == BodyType.Dynamic;
-                ref SolverBody body = ref Bodies[k];
-                body.LinearVelocity = s.LinearVelocity[i];
-                body.AngularVelocity = s.AngularVelocity[i];
-                body.InverseMass = dynamic ? s.InverseMass[i] : 0;
-                body.InverseInertia = dynamic ? s.InverseInertiaWorld[i] : default;
-                body.IsDynamic = dynamic ? SolverBody.DynamicFlags(s.Locks[i]) : 0;
-                body.DeltaPosition = Vector3.Zero;
-                body.DeltaRotation = Quaternion.Identity;
-                _startCenter[k] = s.Center[i];
-                _startRotation[k] = s.Rotation[i];
-                _kick[k] = dynamic ? SubstepKick.Of(s, i, gravity, _h) : default;
-                _colorMask[k] = 0;
-            }
+            RunGroups(GroupPass.LoadBodies, BodyCount - 1, MinBodyChunk);
 
             ref readonly WorldSettings set = ref _settings;
             float contactHertz = MathF.Min(set.ContactHertz, Softness.MaxStableHertz(_h));
@@ -118,16 +100,16 @@ namespace Fulcrum.Dynamics
             if (direct) PrepareRejected(contacts);
             else SplitWide(wide && WideContacts);
             float warmJoints = set.WarmStarting ? 1f : 0f;
-            // The most any joint can carry over from the last (sub)step (see JointSolver.RunsAway).
-            float mass = 0;
-            for (int k = 1; k < BodyCount; k++)
-                if (Bodies[k].IsDynamic != 0) mass += 1f / Bodies[k].InverseMass;
-            float maxJointImpulse = JointSolver.MaxWarmImpulse(mass, _h);
-            // A joint over it is one of a set that contradict each other: every joint on its
-            // bodies starts cold with it (one left warm would fling the body with the set's
+            // A joint over the most any joint can carry over from the last (sub)step (see
+            // JointSolver.RunsAway) is one of a set that contradict each other: every joint on
+            // its bodies starts cold with it (one left warm would fling the body with the set's
             // whole cancelled impulse).
             if (nj > 0)
             {
+                float mass = 0;
+                for (int k = 1; k < BodyCount; k++)
+                    if (Bodies[k].IsDynamic != 0) mass += 1f / Bodies[k].InverseMass;
+                float maxJointImpulse = JointSolver.MaxWarmImpulse(mass, _h);
                 if (_runaway.Length < BodyCount) _runaway = new bool[Bodies.Length];
                 Array.Clear(_runaway, 0, BodyCount);
                 for (int k = 0; k < nj; k++)
@@ -150,6 +132,30 @@ namespace Fulcrum.Dynamics
                 bool drop = _runaway[j.SolverA] || _runaway[j.SolverB];
                 JointSolver.Begin(ref j, _storage, _h, drop ? 0f : warmJoints);
                 RunJoint(ref j, JointSolver.Pass.Prepare);
+            }
+        }
+
+        // Copies the bodies [start, end) of the step into the solver bodies (Prepare).
+        void LoadBodies(int start, int end)
+        {
+            BodyStorage s = _storage;
+            Vector3 gravity = _settings.Gravity;
+            for (int k = start; k < end; k++)
+            {
+                int i = BodySlot[k];
+                bool dynamic = s.Type[i] == BodyType.Dynamic;
+                ref SolverBody body = ref Bodies[k];
+                body.LinearVelocity = s.LinearVelocity[i];
+                body.AngularVelocity = s.AngularVelocity[i];
+                body.InverseMass = dynamic ? s.InverseMass[i] : 0;
+                body.InverseInertia = dynamic ? s.InverseInertiaWorld[i] : default;
+                body.IsDynamic = dynamic ? SolverBody.DynamicFlags(s.Locks[i]) : 0;
+                body.DeltaPosition = Vector3.Zero;
+                body.DeltaRotation = Quaternion.Identity;
+                _startCenter[k] = s.Center[i];
+                _startRotation[k] = s.Rotation[i];
+                _kick[k] = dynamic ? SubstepKick.Of(s, i, gravity, _h) : default;
+                _colorMask[k] = 0;
             }
         }
 

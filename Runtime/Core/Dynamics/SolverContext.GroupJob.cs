@@ -12,7 +12,7 @@ namespace Fulcrum.Dynamics
         // stage on one thread, mostly the wide prepare. The results do not depend on the split.
 
         /// <summary>What <see cref="GroupJob"/> does with its range.</summary>
-        enum GroupPass : byte { PrepareWide, Accumulate, StoreImpulses, StoreBodies }
+        enum GroupPass : byte { LoadBodies, PrepareWide, Accumulate, StoreImpulses, StoreBodies }
 
         /// <summary>Items a thread takes at a time, per pass: below this the split costs more than it saves.</summary>
         const int MinGroupChunk = 16, MinBodyChunk = 256;
@@ -53,6 +53,9 @@ namespace Fulcrum.Dynamics
                         break;
                     case GroupPass.StoreImpulses:
                         c.StoreWideGroups(start, end, Scale);
+                        break;
+                    case GroupPass.LoadBodies:
+                        c.LoadBodies(start + 1, end + 1);
                         break;
                     case GroupPass.StoreBodies:
                         // Solver index k = start + 1 ...: index 0 is the fixed body.

@@ -38,7 +38,7 @@ namespace Fulcrum.Dynamics
         {
             Vector3 g = _settings.Gravity;
             float length = g.Length();
-            _shock.Sweep(Bodies, _settings.ShockDepth, length > 0 ? -g / length : Vector3.Zero, _h, _settings.MaxContactPushSpeed, length, pass);
+            _shock.Sweep(Bodies, _settings.ShockDepth, length > 0 ? -g / length : Vector3.Zero, _h, _settings.MaxContactPushSpeed, length, pass, Pool);
         }
 
         /// <summary>

@@ -62,6 +62,9 @@ namespace Fulcrum.Dynamics
         readonly BodyJob _bodyJob;
         readonly GroupJob _groupJob;
         readonly ShockPropagation _shock = new ShockPropagation();
+
+        /// <summary>The shock-propagation sweep (for tests).</summary>
+        internal ShockPropagation ShockForTests => _shock;
         // Per contact constraint, for PGS's position passes: 0, or the body held still (1 A, 2 B).
         byte[] _held = new byte[16];
         readonly JointTreeSolver _trees = new JointTreeSolver();

@@ -20,6 +20,11 @@ namespace Fulcrum
         Pose[] _shapePose = Array.Empty<Pose>();
         long[] _shapePoseStep = Array.Empty<long>();
         long[] _fatBoxStep = Array.Empty<long>();
+        // Per active shape (index into ShapeStorage.Active) in this step's broad phase: whether its
+        // proxy takes a new fat box, and that box. Sized with the shape slots.
+        bool[] _refit = Array.Empty<bool>();
+        Aabb[] _wantedBox = Array.Empty<Aabb>();
+        BoundsJob? _boundsJob;
 
         float SpeculativeBase => CollisionMargins.SpeculativeDistance(_settings.LinearSlop);
 
@@ -34,6 +39,8 @@ namespace Fulcrum
                 Array.Resize(ref _shapePose, n);
                 Array.Resize(ref _shapePoseStep, n);
                 Array.Resize(ref _fatBoxStep, n);
+                Array.Resize(ref _refit, n);
+                Array.Resize(ref _wantedBox, n);
             }
             _shapeMotion[shape] = 0;
             _shapePoseStep[shape] = -1;
@@ -77,38 +84,73 @@ namespace Fulcrum
         void BroadPhase(float dt)
         {
             ShapeStorage s = Shapes;
-            BodyStorage b = Bodies;
-            float grow = SpeculativeBase;
+            // Each moving shape's bounds, and whether its proxy needs a new fat box, are its own
+            // (split between threads); the tree changes one proxy at a time, in shape order.
+            BoundsJob job = _boundsJob ??= new BoundsJob(this);
+            job.Dt = dt;
+            IParallelScheduler? pool = ParallelScheduler();
+            if (pool != null) pool.For(job, 0, s.ActiveCount, MinBoundsChunk);
+            else job.Execute(0, s.ActiveCount);
             for (int k = 0; k < s.ActiveCount; k++)
             {
+                if (!_refit[k]) continue;
                 int i = s.Active[k];
-                int body = s.Body[i];
-                if (b.Type[body] == BodyType.Static || !b.Awake[body]) continue;
-                Pose pose = ShapeWorldPose(i);
-                _shapePose[i] = pose;
-                _shapePoseStep[i] = _stepIndex;
-                Aabb tight = s.Geometry[i].ComputeAabb(pose);
-                s.WorldAabb[i] = tight;
-                float angular = b.AngularVelocity[body].Length() * dt * CollisionMargins.Reach(tight, b.Center[body]);
-                Aabb swept = tight.Expanded(grow + angular);
-                Vector3 move = b.LinearVelocity[body] * dt;
-                _shapeMotion[i] = move.Length() + angular;
-                swept = new Aabb(swept.Min + Vector3.Min(move, Vector3.Zero), swept.Max + Vector3.Max(move, Vector3.Zero));
-                if (RefitProxy(s.ProxyId[i], swept)) _fatBoxStep[i] = _stepIndex;
+                _broadPhase.MoveProxy(s.ProxyId[i], _wantedBox[k]);
+                _fatBoxStep[i] = _stepIndex;
             }
             var filter = new PairFilter { World = this };
             _broadPhase.UpdatePairs(ref filter);
         }
 
-        // True when the proxy got a new fat box.
-        bool RefitProxy(int proxy, in Aabb swept)
+        /// <summary>Shapes a thread takes at a time in the bounds pass.</summary>
+        const int MinBoundsChunk = 256;
+
+        /// <summary>
+        /// The bounds pass over the active shapes [start, end): world pose, tight box, the box
+        /// swept over the step's motion, and whether the proxy's fat box still holds it.
+        /// </summary>
+        sealed class BoundsJob : IParallelJob
+        {
+            readonly World _w;
+            public float Dt;
+
+            public BoundsJob(World world) => _w = world;
+
+            public void Execute(int start, int end)
+            {
+                World w = _w;
+                ShapeStorage s = w.Shapes;
+                BodyStorage b = w.Bodies;
+                float dt = Dt;
+                float grow = w.SpeculativeBase;
+                for (int k = start; k < end; k++)
+                {
+                    w._refit[k] = false;
+                    int i = s.Active[k];
+                    int body = s.Body[i];
+                    if (b.Type[body] == BodyType.Static || !b.Awake[body]) continue;
+                    Pose pose = w.ShapeWorldPose(i);
+                    w._shapePose[i] = pose;
+                    w._shapePoseStep[i] = w._stepIndex;
+                    Aabb tight = s.Geometry[i].ComputeAabb(pose);
+                    s.WorldAabb[i] = tight;
+                    float angular = b.AngularVelocity[body].Length() * dt * CollisionMargins.Reach(tight, b.Center[body]);
+                    Aabb swept = tight.Expanded(grow + angular);
+                    Vector3 move = b.LinearVelocity[body] * dt;
+                    w._shapeMotion[i] = move.Length() + angular;
+                    swept = new Aabb(swept.Min + Vector3.Min(move, Vector3.Zero), swept.Max + Vector3.Max(move, Vector3.Zero));
+                    w._refit[k] = w.NeedsRefit(s.ProxyId[i], swept, out w._wantedBox[k]);
+                }
+            }
+        }
+
+        // True when the proxy needs a new fat box (<paramref name="wanted"/>).
+        bool NeedsRefit(int proxy, in Aabb swept, out Aabb wanted)
         {
             ref readonly Aabb fat = ref _broadPhase.FatAabb(proxy);
-            Aabb wanted = swept.Expanded(CollisionMargins.AabbMargin);
+            wanted = swept.Expanded(CollisionMargins.AabbMargin);
             // A fat box four times the area it needs came from a fast phase that ended.
-            if (fat.Contains(swept) && fat.SurfaceArea <= 4f * wanted.SurfaceArea) return false;
-            _broadPhase.MoveProxy(proxy, wanted);
-            return true;
+            return !(fat.Contains(swept) && fat.SurfaceArea <= 4f * wanted.SurfaceArea);
         }
 
         // The broad phase's pair callback: hands each new overlap to the world's pair filter.

@@ -159,6 +159,11 @@ namespace Fulcrum
             _shapePose = shapePose;
             _shapePoseStep = shapePoseStep;
             _fatBoxStep = fatBoxStep;
+            if (_refit.Length < _shapeMotion.Length)
+            {
+                _refit = new bool[_shapeMotion.Length];
+                _wantedBox = new Aabb[_shapeMotion.Length];
+            }
             _islands = new IslandBuilder();
             _islands.RestoreSleepRings(sleepNext);
             for (int i = 0; i < removalCount; i++) removals[i] = removals[i].InWorld(Id);

@@ -56,6 +56,8 @@ namespace Fulcrum.Dynamics
             public float Friction;      // the manifold's coefficient
             public float Pushed;        // normal impulse of the first of PGS's two sweeps, N s
             public float Held;          // the contacts' own friction impulse in the last step, N s (its magnitude)
+            public float Carry;         // normal impulse this row's sweep put on the lower body, N s (0: none)
+            public float CarryMass;     // the mass it rests on the lower body with, kg
         }
 
         Row[] _rows = new Row[64];
@@ -66,14 +68,26 @@ namespace Fulcrum.Dynamics
         int[] _adjacency = new int[32];
         int[] _queue = new int[16];
         int[] _levelStart = new int[17];
+        // The sweep's parallel items: per level, the first row of each upper body in it, and
+        // per row the next row of the same upper body (-1: none). A level's rows change only
+        // their upper bodies (the levels differ by one across every row), so the chains of one
+        // level are independent and each runs in order.
+        int[] _heads = new int[16];
+        int[] _headStart = new int[17];
+        int[] _next = new int[16];
+        int[] _lastRowOf = new int[16];
+        int _levels;
+        readonly SweepJob _job;
+
+        public ShockPropagation() => _job = new SweepJob(this);
         // Per manifold of the step's list: whether its pair touches (Build's three passes ask).
         bool[] _touches = new bool[16];
         // Per solver body: the normal impulse the sweep's pushes on the bodies it carries put on
-        // it in the last substep (carried down the stack), and the same being summed in this one.
-        float[] _carried = new float[16], _carrying = new float[16];
+        // it in the last substep (carried down the stack; the rows' Carry summed).
+        float[] _carried = new float[16];
         // The same for the mass a body carries (the bodies resting on it, and theirs), kg: its
         // friction must stop them with it.
-        float[] _carriedMass = new float[16], _carryingMass = new float[16];
+        float[] _carriedMass = new float[16];
 
         /// <summary>cos 45 degrees: the steepest contact that carries support in the sweep.</summary>
         const float SupportCosine = 0.7071f;
@@ -88,13 +102,15 @@ namespace Fulcrum.Dynamics
             if (_carried.Length < bodies)
             {
                 _carried = new float[bodies];
-                _carrying = new float[bodies];
                 _carriedMass = new float[bodies];
-                _carryingMass = new float[bodies];
             }
             if (_queue.Length < bodies) _queue = new int[bodies];
             if (_degree.Length < bodies + 1) _degree = new int[bodies + 1];
             if (_levelStart.Length < bodies + 2) _levelStart = new int[bodies + 2];
+            if (_headStart.Length < bodies + 2) _headStart = new int[bodies + 2];
+            if (_lastRowOf.Length < bodies) _lastRowOf = new int[bodies];
+            if (_heads.Length < manifolds) _heads = new int[manifolds];
+            if (_next.Length < manifolds) _next = new int[manifolds];
             if (_adjacency.Length < 2 * manifolds) _adjacency = new int[2 * manifolds];
             if (_touches.Length < manifolds) _touches = new bool[manifolds];
             if (_rows.Length < manifolds)
@@ -103,6 +119,9 @@ namespace Fulcrum.Dynamics
                 _sorted = new Row[manifolds];
             }
         }
+
+        /// <summary>The most upper bodies one level has had in any step (the sweep's parallel items; for tests).</summary>
+        public int WidestLevel;
 
         /// <summary>Rows in the current step.</summary>
         public int RowCount => _count;
@@ -123,16 +142,12 @@ namespace Fulcrum.Dynamics
             if (_carried.Length < bodyCount)
             {
                 _carried = new float[2 * bodyCount];
-                _carrying = new float[2 * bodyCount];
                 _carriedMass = new float[2 * bodyCount];
-                _carryingMass = new float[2 * bodyCount];
             }
             else
             {
                 Array.Clear(_carried, 0, bodyCount);
-                Array.Clear(_carrying, 0, bodyCount);
                 Array.Clear(_carriedMass, 0, bodyCount);
-                Array.Clear(_carryingMass, 0, bodyCount);
             }
             // Only a contact that is half way to the depth already, or that would get there
             // within the step at its present approach, can pass it: a step with none (every
@@ -248,6 +263,31 @@ namespace Fulcrum.Dynamics
             for (int k = 0; k < _count; k++) _levelStart[_level[_rows[k].Lower] + 1]++;
             for (int l = 0; l <= maxLevel; l++) _levelStart[l + 1] += _levelStart[l];
             for (int k = 0; k < _count; k++) _sorted[_levelStart[_level[_rows[k].Lower]]++] = _rows[k];
+            // _levelStart[l] is now the end of level l's rows. Chain each level's rows by upper body.
+            if (_heads.Length < _count)
+            {
+                _heads = new int[_sorted.Length];
+                _next = new int[_sorted.Length];
+            }
+            if (_lastRowOf.Length < bodyCount) _lastRowOf = new int[2 * bodyCount];
+            if (_headStart.Length < maxLevel + 2) _headStart = new int[2 * maxLevel + 2];
+            for (int k = 0; k < _count; k++) _lastRowOf[_sorted[k].Upper] = -1;
+            int heads = 0, row = 0;
+            _levels = maxLevel + 1;
+            for (int l = 0; l <= maxLevel; l++)
+            {
+                _headStart[l] = heads;
+                for (; row < _levelStart[l]; row++)
+                {
+                    _next[row] = -1;
+                    int upper = _sorted[row].Upper;
+                    if (_lastRowOf[upper] < 0) _heads[heads++] = row;
+                    else _next[_lastRowOf[upper]] = row;
+                    _lastRowOf[upper] = row;
+                }
+            }
+            _headStart[_levels] = heads;
+            for (int l = 0; l < _levels; l++) WidestLevel = Math.Max(WidestLevel, _headStart[l + 1] - _headStart[l]);
         }
 
         static int IndexOf(int[] indexOfSlot, int slot) => slot < 0 ? 0 : indexOfSlot[slot];
@@ -292,33 +332,50 @@ namespace Fulcrum.Dynamics
         /// dynamic lower body carries the upper one away. <paramref name="gravity"/>: |g| (m/s²)
         /// for the weight's friction on pressed contacts (PGS), or 0.
         /// </summary>
-        public void Sweep(SolverBody[] bodies, float depth, Vector3 up, float h, float maxPush, float gravity = 0f, SweepPass pass = SweepPass.Whole)
+        public void Sweep(SolverBody[] bodies, float depth, Vector3 up, float h, float maxPush, float gravity = 0f, SweepPass pass = SweepPass.Whole,
+            IParallelScheduler? pool = null)
         {
             if (_count == 0) return;
             int n = bodies.Length;
             if (_carried.Length < n)
             {
                 Array.Resize(ref _carried, n);
-                Array.Resize(ref _carrying, n);
                 Array.Resize(ref _carriedMass, n);
-                Array.Resize(ref _carryingMass, n);
             }
+            SweepJob job = _job;
+            job.Bodies = bodies;
+            job.Depth = depth;
+            job.Up = up;
+            job.H = h;
+            job.MaxPush = maxPush;
+            job.Gravity = gravity;
+            job.Pass = pass;
+            // Level by level (each reads the velocities the level below it left), the upper
+            // bodies of a level side by side.
+            for (int l = 0; l < _levels; l++)
+            {
+                if (pool != null) pool.For(job, _headStart[l], _headStart[l + 1], MinChunk);
+                else job.Execute(_headStart[l], _headStart[l + 1]);
+            }
+            job.Bodies = null;
+            // What each body carried in this substep is what the next one's friction below it
+            // may use: the loads its rows put on it, summed in row order (the same sums whatever
+            // thread swept which row). Read in the sweep above, replaced only now.
             int k;
-            for (k = 0; k < _count; k++) SweepManifold(bodies, ref _sorted[k], depth, up, h, maxPush, gravity, pass);
-            // What each body carried in this substep is what the next one's friction below it may use.
             for (k = 0; k < _count; k++)
             {
-                _carried[_sorted[k].Upper] = _carrying[_sorted[k].Upper];
-                _carried[_sorted[k].Lower] = _carrying[_sorted[k].Lower];
-                _carriedMass[_sorted[k].Upper] = _carryingMass[_sorted[k].Upper];
-                _carriedMass[_sorted[k].Lower] = _carryingMass[_sorted[k].Lower];
+                ref Row r = ref _sorted[k];
+                _carried[r.Upper] = 0f;
+                _carried[r.Lower] = 0f;
+                _carriedMass[r.Upper] = 0f;
+                _carriedMass[r.Lower] = 0f;
             }
             for (k = 0; k < _count; k++)
             {
-                _carrying[_sorted[k].Upper] = 0;
-                _carrying[_sorted[k].Lower] = 0;
-                _carryingMass[_sorted[k].Upper] = 0;
-                _carryingMass[_sorted[k].Lower] = 0;
+                ref Row r = ref _sorted[k];
+                if (!(r.Carry > 0f)) continue;
+                _carried[r.Lower] += r.Carry;
+                _carriedMass[r.Lower] += r.CarryMass;
             }
         }
 
@@ -335,6 +392,7 @@ namespace Fulcrum.Dynamics
             // out along the vertical, so a slightly tilted normal does not nudge the body sideways
             // every substep (a 40-row pyramid drifts twice as far when the push follows the normal).
             float lift = 1f;
+            first.Carry = 0f;
             if (up != Vector3.Zero)
             {
                 lift = Vector3.Dot(n, up);
@@ -406,8 +464,8 @@ namespace Fulcrum.Dynamics
             if (whole) normal = load;
             if (normal > 0f)
             {
-                _carrying[first.Lower] += normal;
-                _carryingMass[first.Lower] += mass + _carriedMass[first.Upper];
+                first.Carry = normal;
+                first.CarryMass = mass + _carriedMass[first.Upper];
             }
             // The first of PGS's two sweeps only pushes and passes the loads down; the second
             // gives friction once, for the whole load (twice, it stopped a stack on a ramp
@@ -438,6 +496,30 @@ namespace Fulcrum.Dynamics
             if (l.IsDynamic != 0 && Vector3.Dot(change, u.LinearVelocity) > 0f) return;
             u.LinearVelocity += change;
             if (u.HasLinearLocks) u.LinearVelocity = AxisLockMath.MaskLinear(u.LinearVelocity, u.Locks);
+        }
+
+        /// <summary>Rows (upper-body chains) a thread takes at a time.</summary>
+        const int MinChunk = 64;
+
+        /// <summary>The rows of the upper-body chains [start, end) of one level, each chain in order.</summary>
+        sealed class SweepJob : IParallelJob
+        {
+            readonly ShockPropagation _s;
+            public SolverBody[]? Bodies;
+            public float Depth, H, MaxPush, Gravity;
+            public Vector3 Up;
+            public SweepPass Pass;
+
+            public SweepJob(ShockPropagation s) => _s = s;
+
+            public void Execute(int start, int end)
+            {
+                ShockPropagation s = _s;
+                SolverBody[] bodies = Bodies!;
+                for (int i = start; i < end; i++)
+                    for (int k = s._heads[i]; k >= 0; k = s._next[k])
+                        s.SweepManifold(bodies, ref s._sorted[k], Depth, Up, H, MaxPush, Gravity, Pass);
+            }
         }
     }
 }

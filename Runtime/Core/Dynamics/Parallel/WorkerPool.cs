@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Threading;
 
 namespace Fulcrum.Dynamics
@@ -20,12 +21,25 @@ namespace Fulcrum.Dynamics
         readonly ManualResetEventSlim _wake = new ManualResetEventSlim(false);
         IParallelJob? _job;
         int _start, _end, _chunk, _chunkCount;
-        // Generation (high 32 bits) and next chunk (low 32): a thread still busy with an older
-        // call sees the generation change and can never take a chunk of the new one.
-        long _ticket;
-        int _remaining;
-        int _generation;
+        Counters _hot;
         volatile bool _stopped;
+
+        /// <summary>
+        /// The counters every thread writes or polls during a call, each on a cache line of its
+        /// own (64 bytes, with a line of padding before the first): the chunk claims would
+        /// otherwise take the line the idle workers poll and the job's fields away from them at
+        /// every claim.
+        /// </summary>
+        [StructLayout(LayoutKind.Explicit, Size = 256)]
+        struct Counters
+        {
+            /// <summary>Generation (high 32 bits) and next chunk (low 32): a thread still busy with an older call sees the generation change and can never take a chunk of the new one.</summary>
+            [FieldOffset(64)] public long Ticket;
+            /// <summary>Chunks of the call not yet done; each thread subtracts the ones it ran when it runs out.</summary>
+            [FieldOffset(128)] public int Remaining;
+            /// <summary>Calls so far: the workers poll it for a new one.</summary>
+            [FieldOffset(192)] public int Generation;
+        }
 
         /// <summary>Starts <paramref name="workers"/> background threads (the caller is one more).</summary>
         public WorkerPool(int workers)
@@ -72,38 +86,41 @@ namespace Fulcrum.Dynamics
             // could compare that stale chunk number against the fields written below for the new
             // call, win the compare-exchange and run a chunk of the new job that the new call
             // then hands out again (twice-solved rows, and _remaining reaching 0 early).
-            int previous = Volatile.Read(ref _generation);
-            Interlocked.Exchange(ref _ticket, ((long)previous << 32) | int.MaxValue);
+            int previous = Volatile.Read(ref _hot.Generation);
+            Interlocked.Exchange(ref _hot.Ticket, ((long)previous << 32) | int.MaxValue);
             _job = job;
             _start = start;
             _end = end;
             _chunk = chunk;
             _chunkCount = chunks;
-            Volatile.Write(ref _remaining, chunks);
-            int generation = Interlocked.Increment(ref _generation);
-            Interlocked.Exchange(ref _ticket, (long)generation << 32);
+            Volatile.Write(ref _hot.Remaining, chunks);
+            int generation = Interlocked.Increment(ref _hot.Generation);
+            Interlocked.Exchange(ref _hot.Ticket, (long)generation << 32);
             _wake.Set();
             RunChunks(generation);
             int spins = 0;
-            while (Volatile.Read(ref _remaining) > 0) Pause(ref spins);
+            while (Volatile.Read(ref _hot.Remaining) > 0) Pause(ref spins);
             _wake.Reset();
             _job = null;
         }
 
         void RunChunks(int generation)
         {
+            int done = 0;
             while (true)
             {
-                long ticket = Volatile.Read(ref _ticket);
-                if ((int)(ticket >> 32) != generation) return;
+                long ticket = Volatile.Read(ref _hot.Ticket);
+                if ((int)(ticket >> 32) != generation) break;
                 int c = (int)(ticket & 0xFFFFFFFF);
-                if (c >= _chunkCount) return;
-                if (Interlocked.CompareExchange(ref _ticket, ticket + 1, ticket) != ticket) continue;
+                if (c >= _chunkCount) break;
+                if (Interlocked.CompareExchange(ref _hot.Ticket, ticket + 1, ticket) != ticket) continue;
                 IParallelJob job = _job!;
                 int s = _start + c * _chunk;
                 job.Execute(s, Math.Min(_end, s + _chunk));
-                Interlocked.Decrement(ref _remaining);
+                done++;
             }
+            // One write to the shared count per thread and call, not one per chunk.
+            if (done > 0) Interlocked.Add(ref _hot.Remaining, -done);
         }
 
         // Busy-waits for a short while (a colour batch is microseconds), then yields the core.
@@ -119,13 +136,13 @@ namespace Fulcrum.Dynamics
             while (true)
             {
                 int spins = 0;
-                while (Volatile.Read(ref _generation) == seen)
+                while (Volatile.Read(ref _hot.Generation) == seen)
                 {
                     if (_stopped) return;
                     if (spins > 2000) _wake.Wait();
                     Pause(ref spins);
                 }
-                seen = Volatile.Read(ref _generation);
+                seen = Volatile.Read(ref _hot.Generation);
                 RunChunks(seen);
             }
         }
