@@ -151,7 +151,8 @@ namespace Fulcrum.SoftBodies
         /// <summary>
         /// True when every vertex position and velocity is finite and inside the world bounds
         /// and no tet has blown apart (its |J| beyond <see cref="MaxVolumeRatio"/> and more than
-        /// <see cref="BlowUpGrowth"/> times the step-start largest, or beyond <see cref="MaxStretch"/>);
+        /// <see cref="BlowUpGrowth"/> times the step-start largest, or beyond <see cref="MaxStretch"/>;
+        /// tets holding a pinned vertex are left out, see <see cref="VolumeFloor.Measure"/>);
         /// otherwise puts every vertex back at its step-start position at rest and returns false.
         /// </summary>
         internal bool KeepFinite()

@@ -73,7 +73,11 @@ namespace Fulcrum.Tests.Robustness
         // it with its overlap spring (the contact pass had pushed it out alone): 237, 649 and 681
         // pass, 168 gains 15.3 J against 13.6 J allowed; the ceilings do not move (over seeds
         // 0-999 16 -> 14).
-        [TestCase(0, 50, 2, 0, 0)]
+        // Then the tets that hold a pinned vertex were left out of the blow-up rule (a very soft
+        // box pinned at one corner and knocked to the ground stretched the tet at the pin to 400
+        // times its volume and back): 47 passes, none fails newly: 2/0/0 -> 1/0/0 (over seeds
+        // 0-999 14 -> 13).
+        [TestCase(0, 50, 1, 0, 0)]
         [TestCase(50, 50, 1, 0, 1)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
@@ -117,7 +121,11 @@ namespace Fulcrum.Tests.Robustness
         // and it went to NaN), 991 (a 2.9 kg sphere at E 1.9e3 Pa under a 1 t body, squeezed out
         // past tenfold volume a few percent a step and back: reported as blown apart and frozen),
         // 237 (a 3.9e8 Pa Newton box on a soft Newton box: the contact pass pushed the vertices its
-        // Newton step took into the ground out alone, and a tet ended at J -0.49).
+        // Newton step took into the ground out alone, and a tet ended at J -0.49), 47 (a 122 kg
+        // Newton box at E 7.7e3 Pa pinned at one corner, knocked to the ground by a 343 kg body:
+        // the tet at the pin went from 5 to 98 times its volume in a step and 400 in six, and
+        // back, and was reported as blown apart and frozen).
+        [TestCase(47)]
         [TestCase(237)]
         [TestCase(639)]
         [TestCase(991)]
