@@ -100,6 +100,8 @@ namespace Fulcrum.Benchmarks.Peers
             output.WriteLine();
             output.WriteLine("Fulcrum by stage (World.LastStepProfile, wall ms per step, mean" + (runs.Value > 1 ? ", range over runs" : "") + "):");
             PeerTable.PrintStages(output, all);
+            output.WriteLine();
+            PeerBars.Print(output, all);
         }
 
         // Program passes every "--" argument (and every number) through untouched, so options ride along.
