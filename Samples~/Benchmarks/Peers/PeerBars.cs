@@ -28,7 +28,7 @@ namespace Fulcrum.Benchmarks.Peers
                     run => Ratio(run, "Bepu2", "Fulcrum", scene), x => x >= 1);
                 Bar(output, runs, $"{scene}: Bepu / Fulcrum reuse off mean, 1 thread", ">= 1",
                     run => Ratio(run, "Bepu2", "Fulcrum reuse off", scene), x => x >= 1);
-                PeerResult? sample = runs[0].FirstOrDefault(r => r.Scene == scene && r.Engine == "Fulcrum");
+                PeerResult? sample = PeerTable.Find(runs[0], "Fulcrum", scene);
                 if (sample != null && sample.Bodies > 1000)
                 {
                     Bar(output, runs, $"{scene}: Fulcrum 2 threads / 1 thread, wall mean", "<= 1",
@@ -57,25 +57,22 @@ namespace Fulcrum.Benchmarks.Peers
             output.WriteLine($"bar: {name}: {range} ({bound}): {(held == values.Count ? "met" : held == 0 ? "not met" : "mixed")}, held in {held} of {values.Count} runs");
         }
 
-        static PeerResult? Find(List<PeerResult> run, string engine, string scene) =>
-            run.FirstOrDefault(r => r.Engine == engine && r.Scene == scene);
-
         static double Ratio(List<PeerResult> run, string engine, string reference, string scene)
         {
-            PeerResult? a = Find(run, engine, scene), b = Find(run, reference, scene);
+            PeerResult? a = PeerTable.Find(run, engine, scene), b = PeerTable.Find(run, reference, scene);
             if (a == null || b == null) return double.NaN;
             return a.CpuTime == b.CpuTime ? a.MeanMs / b.MeanMs : a.WallMeanMs / b.WallMeanMs;
         }
 
         static double WallRatio(List<PeerResult> run, string engine, string reference, string scene)
         {
-            PeerResult? a = Find(run, engine, scene), b = Find(run, reference, scene);
+            PeerResult? a = PeerTable.Find(run, engine, scene), b = PeerTable.Find(run, reference, scene);
             return a == null || b == null ? double.NaN : a.WallMeanMs / b.WallMeanMs;
         }
 
         static double Difference(List<PeerResult> run, string engine, string reference, string scene)
         {
-            PeerResult? a = Find(run, engine, scene), b = Find(run, reference, scene);
+            PeerResult? a = PeerTable.Find(run, engine, scene), b = PeerTable.Find(run, reference, scene);
             return a == null || b == null ? double.NaN : 1000 * (a.Drift - b.Drift);
         }
     }

@@ -100,7 +100,7 @@ namespace Fulcrum.Benchmarks.Peers
             return cut > 0 ? engine.Substring(0, cut) : engine;
         }
 
-        static PeerResult? Find(List<PeerResult> run, string engine, string scene)
+        internal static PeerResult? Find(List<PeerResult> run, string engine, string scene)
         {
             foreach (PeerResult x in run)
                 if (x.Engine == engine && x.Scene == scene) return x;
