@@ -88,6 +88,7 @@ namespace Fulcrum.Tests.Collision
             Assert.That(events, Is.GreaterThan(1000), "the pile made contacts");
             Assert.That(four.ParallelNarrowPhaseSteps, Is.GreaterThan(200), "steps whose pair functions ran on the pool");
             Assert.That(one.ParallelNarrowPhaseSteps, Is.EqualTo(0));
+            Assert.That(four.ParallelManifoldRewrites, Is.GreaterThan(1000), "contacts whose manifolds the pool rewrote in place");
 
             BodyStorage sa = one.Bodies, sb = four.Bodies;
             Assert.That(sb.ActiveCount, Is.EqualTo(sa.ActiveCount));

@@ -26,7 +26,7 @@ namespace Fulcrum.Tests.State
             // Outputs of the last step (documented: empty after a restore until the next step).
             "World._events", "World._eventCount", "World._jointBreaks", "World._jointBreakCount",
             "World.StatMaxPenetration", "World.StatContactCount", "World.StatMaxJointError", "World.StatReusedManifoldPairs",
-            "NarrowPhase.Touching", "NarrowPhase.MaxPenetration", "NarrowPhase.ReusedPairs", "NarrowPhase.ParallelSteps",
+            "NarrowPhase.Touching", "NarrowPhase.MaxPenetration", "NarrowPhase.ReusedPairs", "NarrowPhase.ParallelSteps", "NarrowPhase.ParallelRewrites",
             // Scratch of one step, cleared or overwritten before it is read.
             "NarrowPhase._sortKeys", "NarrowPhase._sortItems", "NarrowPhase._sortCount", "NarrowPhase._contactOrder", "World._eventOrder",
             "World._stepEvents", "World._stepEventKeys", "World._stepEventOrder", "World._stepEventCount",

@@ -5,20 +5,16 @@ namespace Fulcrum.Collision
 {
     internal sealed partial class NarrowPhase
     {
-        // Rewrites a contact's manifold chain from the buffer; points whose feature id
-        // existed last step inherit its accumulated impulses (warm starting).
-        void WriteManifolds(ref Contact ct, ContactBuffer buffer)
+        // Gives a contact's manifold chain one manifold per patch of the buffer (serial: the
+        // graph's free list is shared).
+        void ResizeChain(ref Contact ct, ContactBuffer buffer)
         {
             ContactGraph g = Graph;
-            ContactPointCache cache = _pointCache;
-            cache.Capture(g, ct.FirstManifold);
-
-            // Resize the chain to the number of patches.
             int patches = Math.Min(buffer.PatchCount, ContactGraph.MaxManifoldsPerPair);
-            int first = ct.FirstManifold;
+            if (patches == ct.ManifoldCount) return;
             if (patches == 0) { g.FreeManifolds(ref ct); return; }
-            if (first < 0) first = ct.FirstManifold = g.AllocateManifold();
-            int m = first;
+            int m = ct.FirstManifold;
+            if (m < 0) m = ct.FirstManifold = g.AllocateManifold();
             for (int p = 1; p < patches; p++)
             {
                 if (g.ManifoldNext[m] < 0)
@@ -36,6 +32,20 @@ namespace Fulcrum.Collision
                 g.ManifoldNext[m] = -1;
             }
             ct.ManifoldCount = patches;
+        }
+
+        // Rewrites the points of a contact's manifold chain (already one manifold per patch,
+        // ResizeChain) from the buffer; points whose feature id is in the cache (last step's
+        // points, captured before the chain was resized) inherit its accumulated impulses (warm
+        // starting). Writes only this contact and its manifolds (the parallel pass runs it with
+        // a cache of its own).
+        void WriteManifolds(ref Contact ct, ContactBuffer buffer, ContactPointCache cache)
+        {
+            ContactGraph g = Graph;
+            int patches = ct.ManifoldCount;
+            if (patches == 0) return;
+            int first = ct.FirstManifold;
+            int m;
 
             ShapeStorage s = _in.Shapes;
             int sa = ct.ShapeA, sb = ct.ShapeB;
@@ -99,19 +109,21 @@ namespace Fulcrum.Collision
             _sortCount++;
         }
 
-        // Counts the touching points and the deepest penetration of a contact listed this step.
-        void Measure(in Contact ct)
+        // The touching points and the deepest penetration of a contact listed this step.
+        void Measure(in Contact ct, out int touching, out float deepest)
         {
             ContactGraph g = Graph;
             float slop = _in.LinearSlop;
+            touching = 0;
+            deepest = 0;
             for (int m = ct.FirstManifold; m >= 0; m = g.ManifoldNext[m])
             {
                 ref ContactManifold mf = ref g.Manifolds[m];
                 for (int i = 0; i < mf.PointCount; i++)
                 {
                     float sep = ContactManifold.Point(ref mf, i).Separation;
-                    if (sep <= slop) Touching++;
-                    if (-sep > MaxPenetration) MaxPenetration = -sep;
+                    if (sep <= slop) touching++;
+                    if (-sep > deepest) deepest = -sep;
                 }
             }
         }

@@ -154,12 +154,22 @@ namespace Fulcrum.Collision
             return true;
         }
 
-        // A reused contact's share of the step's figures (serial: the fields are the stage's).
-        void CountReuse(int touching, float deepest)
+        // A listed contact's share of the step's figures (serial: the fields are the stage's).
+        void Count(int touching, float deepest)
         {
             Touching += touching;
             MaxPenetration = MathF.Max(MaxPenetration, deepest);
-            ReusedPairs++;
+        }
+
+        // After a contact's manifolds were rewritten from its pair function: its points are
+        // remembered for reuse, unless it can approach by more than the reuse bound's half
+        // margin in this step (it will have moved too far to reuse next step, and storing its
+        // points would be wasted). Writes only this contact (the parallel pass runs it too).
+        void FinishRewrite(ref Contact ct, float speculative, in Pose poseA, in Pose poseB)
+        {
+            if (ReuseEnabled && ct.ManifoldCount > 0 && speculative <= 1.5f * _in.SpeculativeBase)
+                RememberManifolds(ref ct, speculative, poseA, poseB);
+            else ct.Flags &= ~ContactFlags.Reusable;
         }
 
         // The two stored surface points carried with rotations ra and rb (B's origin d from

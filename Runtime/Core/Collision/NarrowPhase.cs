@@ -27,6 +27,8 @@ namespace Fulcrum.Collision
         public int ReusedPairs;
         /// <summary>Steps whose narrow phase ran its pair functions on the worker pool (for tests).</summary>
         public long ParallelSteps;
+        /// <summary>Contacts whose manifolds the worker pool rewrote in place (for tests).</summary>
+        public long ParallelRewrites;
 
         NarrowPhaseInput _in;
         readonly ContactBuffer _contactBuffer = new ContactBuffer();
@@ -78,9 +80,9 @@ namespace Fulcrum.Collision
             while (k < g.DenseCount)
             {
                 int c = g.Dense[k];
-                if (UpdateContact(c, ref host)) k++;
+                if ((parallel && FinishedInParallel(c)) || UpdateContact(c, ref host)) k++;
             }
-            if (parallel) ForgetParallelResults();
+            if (parallel) TakeFinishedResults();
             // Bodies woken by a contact: their pairs with other sleepers were skipped above.
             BodyStorage bodies = input.Bodies;
             while (_anyWoken)
@@ -191,7 +193,8 @@ namespace Fulcrum.Collision
                     : reuse && CanReuseManifolds(ct, speculative, poseA, poseB) && ReuseManifolds(ref ct, speculative, poseA, poseB, out touching, out deepest);
                 if (reused)
                 {
-                    CountReuse(touching, deepest);
+                    Count(touching, deepest);
+                    ReusedPairs++;
                     AddToSort(ct.Key, c);
                     WakeSleeper(bodyA, awakeA, ref host);
                     WakeSleeper(bodyB, awakeB, ref host);
@@ -224,17 +227,16 @@ namespace Fulcrum.Collision
                 return true;
             }
             if (!reduced) buffer.Reduce();
-            WriteManifolds(ref ct, buffer);
+            _pointCache.Capture(g, ct.FirstManifold);
+            ResizeChain(ref ct, buffer);
+            WriteManifolds(ref ct, buffer, _pointCache);
             if (ct.ManifoldCount > 0)
             {
                 AddToSort(ct.Key, c);
-                Measure(ct);
+                Measure(ct, out int touching, out float deepest);
+                Count(touching, deepest);
             }
-            // A pair that can approach by more than the reuse bound's half margin in this step
-            // will have moved too far to reuse next step: storing its points would be wasted.
-            if (reuse && ct.ManifoldCount > 0 && speculative <= 1.5f * _in.SpeculativeBase)
-                RememberManifolds(ref ct, speculative, poseA, poseB);
-            else ct.Flags &= ~ContactFlags.Reusable;
+            FinishRewrite(ref ct, speculative, poseA, poseB);
 
             if (ct.ManifoldCount > 0)
             {

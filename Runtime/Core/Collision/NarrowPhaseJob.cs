@@ -6,9 +6,10 @@ namespace Fulcrum.Collision
     /// <summary>
     /// The parallel pass of the narrow phase: every contact's manifold reuse or pair function,
     /// run on the worker pool before the serial pass consumes them. Each contact writes only its
-    /// own manifolds (reuse) or its own fixed-size slot (reduced patches and points), so the
-    /// result does not depend on which thread ran it; everything order-dependent (manifold
-    /// allocation, warm starting, waking, sorting, statistics) stays in the serial pass.
+    /// own manifolds (reuse, or a rewrite that keeps the chain's length) or its own fixed-size
+    /// slot (reduced patches and points), so the result does not depend on which thread ran it;
+    /// everything order-dependent (manifold allocation, waking, sorting, statistics) stays in
+    /// the serial pass.
     /// Slots are indexed by the contact's dense index at the start of the pass. Allocated once
     /// per world; the slots and the per-block buffers grow before the parallel part, never
     /// inside it.
@@ -21,13 +22,17 @@ namespace Fulcrum.Collision
         public const int MaxPoints = MaxPatches * 4;
 
         // What the pass found for a slot: nothing (both asleep, a sensor), manifolds reused,
-        // a pair function run, fat boxes parted (the serial pass destroys the contact), or the
-        // shapes out of reach (no pair function).
-        const byte None = 0, Reuse = 1, Collide = 2, Parted = 3, OutOfReach = 4;
+        // a pair function run (its patches kept for the serial pass), fat boxes parted (the
+        // serial pass destroys the contact), the shapes out of reach (no pair function), or a
+        // pair function run and its manifolds rewritten in place (the chain kept its length).
+        const byte None = 0, Reuse = 1, Collide = 2, Parted = 3, OutOfReach = 4, Rewritten = 5;
 
         readonly NarrowPhase _narrowPhase;
         int[] _contact = new int[64];
         byte[] _result = new byte[64];
+        // 1 where the pass finished the contact's update (the serial pass skips it), and its key.
+        byte[] _finished = new byte[64];
+        ulong[] _key = new ulong[64];
         bool[] _awakeA = new bool[64], _awakeB = new bool[64];
         // A reused contact's touching points and deepest penetration (the step's figures).
         int[] _touching = new int[64];
@@ -40,6 +45,8 @@ namespace Fulcrum.Collision
         float[] _separation = new float[64 * MaxPoints];
         uint[] _id = new uint[64 * MaxPoints];
         ContactBuffer[] _buffers = Array.Empty<ContactBuffer>();
+        // Per block: last step's points of the contact being rewritten (warm starting).
+        ContactPointCache[] _caches = Array.Empty<ContactPointCache>();
         int _blocks;
 
         /// <summary>Contacts (dense indices) of this step's pass.</summary>
@@ -79,11 +86,31 @@ namespace Fulcrum.Collision
             return _result[i] == Reuse;
         }
 
+        /// <summary>Whether slot <paramref name="i"/>'s contact had its manifolds rewritten in place.</summary>
+        public bool Written(int i) => _result[i] == Rewritten;
+
+        /// <summary>Whether the pass finished slot <paramref name="i"/>'s contact (nothing left for the serial pass but listing it).</summary>
+        public bool Finished(int i) => _finished[i] != 0;
+
+        /// <summary>Slot <paramref name="i"/>'s contact, with pair key <paramref name="key"/>, needs nothing more of the serial pass.</summary>
+        public void Finish(int i, ulong key)
+        {
+            _finished[i] = 1;
+            _key[i] = key;
+        }
+
+        /// <summary>The pair key of finished slot <paramref name="i"/>'s contact.</summary>
+        public ulong Key(int i) => _key[i];
+
+        /// <summary>Whether slot <paramref name="i"/>'s contact has manifolds this step (reused or rewritten).</summary>
+        public bool Listed(int i) => _result[i] == Reuse || _result[i] == Rewritten;
+
         /// <summary>Slot <paramref name="i"/> holds contact <paramref name="contact"/>, with no result yet.</summary>
         public void Clear(int i, int contact)
         {
             _contact[i] = contact;
             _result[i] = None;
+            _finished[i] = 0;
         }
 
         /// <summary>Slot <paramref name="i"/>'s contact reused its manifolds in place.</summary>
@@ -95,6 +122,13 @@ namespace Fulcrum.Collision
             _awakeB[i] = awakeB;
             _touching[i] = touching;
             _deepest[i] = deepest;
+        }
+
+        /// <summary>Slot <paramref name="i"/>'s contact ran its pair function and rewrote its manifolds in place.</summary>
+        public void SetWritten(int i, bool awakeA, bool awakeB, float speculative, int touching, float deepest)
+        {
+            SetReused(i, awakeA, awakeB, speculative, touching, deepest);
+            _result[i] = Rewritten;
         }
 
         /// <summary>Slot <paramref name="i"/>'s contact ran its pair function: keeps the reduced patches.</summary>
@@ -126,13 +160,20 @@ namespace Fulcrum.Collision
             if (_buffers.Length >= blocks) return;
             int old = _buffers.Length;
             Array.Resize(ref _buffers, blocks);
-            for (int b = old; b < blocks; b++) _buffers[b] = new ContactBuffer();
+            Array.Resize(ref _caches, blocks);
+            for (int b = old; b < blocks; b++)
+            {
+                _buffers[b] = new ContactBuffer();
+                _caches[b] = new ContactPointCache();
+            }
         }
 
         void Grow(int n)
         {
             Array.Resize(ref _contact, n);
             Array.Resize(ref _result, n);
+            Array.Resize(ref _finished, n);
+            Array.Resize(ref _key, n);
             Array.Resize(ref _awakeA, n);
             Array.Resize(ref _awakeB, n);
             Array.Resize(ref _touching, n);
@@ -168,8 +209,9 @@ namespace Fulcrum.Collision
             for (int b = start; b < end; b++)
             {
                 ContactBuffer buffer = _buffers[b];
+                ContactPointCache cache = _caches[b];
                 int from = (int)((long)Count * b / _blocks), to = (int)((long)Count * (b + 1) / _blocks);
-                for (int i = from; i < to; i++) _narrowPhase.Precompute(i, this, buffer);
+                for (int i = from; i < to; i++) _narrowPhase.Precompute(i, this, buffer, cache);
             }
         }
 

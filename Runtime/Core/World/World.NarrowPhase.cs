@@ -16,6 +16,9 @@ namespace Fulcrum
         /// <summary>Steps whose narrow phase ran its pair functions on the worker pool (for tests).</summary>
         internal long ParallelNarrowPhaseSteps => _narrowPhase.ParallelSteps;
 
+        /// <summary>Contacts whose manifolds the worker pool rewrote in place (for tests).</summary>
+        internal long ParallelManifoldRewrites => _narrowPhase.ParallelRewrites;
+
         /// <summary>
         /// <see cref="StepStage.NarrowPhase"/>: runs <see cref="Collision.NarrowPhase.Run{THost}"/>
         /// (Collision/NarrowPhase.cs): the pair functions of every contact with an awake body,
