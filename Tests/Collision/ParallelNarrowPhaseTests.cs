@@ -89,6 +89,8 @@ namespace Fulcrum.Tests.Collision
             Assert.That(four.ParallelNarrowPhaseSteps, Is.GreaterThan(200), "steps whose pair functions ran on the pool");
             Assert.That(one.ParallelNarrowPhaseSteps, Is.EqualTo(0));
             Assert.That(four.ParallelManifoldRewrites, Is.GreaterThan(1000), "contacts whose manifolds the pool rewrote in place");
+            Assert.That(four.ParallelPairSearch.Runs, Is.GreaterThan(0), "steps whose pair search ran on the pool");
+            Assert.That(four.ParallelPairSearch.Overflows, Is.GreaterThan(0), "pair-search blocks that filled and were finished on the stepping thread");
 
             BodyStorage sa = one.Bodies, sb = four.Bodies;
             Assert.That(sb.ActiveCount, Is.EqualTo(sa.ActiveCount));

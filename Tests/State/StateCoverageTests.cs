@@ -33,7 +33,7 @@ namespace Fulcrum.Tests.State
             "NarrowPhase._in", "NarrowPhase._anyWoken", "NarrowPhase._contactBuffer", "NarrowPhase._pointCache",
             "NarrowPhase._job", "NarrowPhase._slot", "World._freeBodies", "NarrowPhase._reuseCosHalfAngle",
             "World._workers", "World._scheduler", "World._solverContext", "World._pgs", "World._tgs",
-            "World._stepConstrained", "World._solvedInStep", "World._refit", "World._wantedBox", "World._boundsJob",
+            "World._stepConstrained", "World._solvedInStep", "World._refit", "World._wantedBox", "World._boundsJob", "World._pairSearch",
             // Queries: their own scratch, and bounds refreshed lazily before the next query.
             "World._queryBuffer", "World._rayHits", "World._castHits", "World._overlaps", "World._queryBoundsStale",
             // Island building: only the sleeping rings (SleepNext) live across steps.

@@ -76,38 +76,50 @@ namespace Fulcrum.Collision
         }
 
         /// <summary>
-        /// Finds the new overlaps of every queued proxy and hands each pair of shapes to
-        /// <paramref name="callback"/> once (a pair of two moved proxies is reported by the one
-        /// with the higher node; a moved static proxy leaves moved moving proxies to report it).
+        /// Finds the new overlaps of every queued proxy and hands each pair of shapes that
+        /// <paramref name="callback"/> accepts to it once (a pair of two moved proxies is reported
+        /// by the one with the higher node; a moved static proxy leaves moved moving proxies to
+        /// report it). With a <paramref name="search"/> and a <paramref name="pool"/>, and enough
+        /// queued proxies, the tree queries and the accept tests run on the pool first; the
+        /// pairs reach <see cref="IPairCallback.AddPair"/> in the same order either way.
         /// </summary>
-        public void UpdatePairs<T>(ref T callback) where T : struct, IPairCallback
+        public void UpdatePairs<T>(ref T callback, PairSearch<T>? search = null, IParallelScheduler? pool = null) where T : struct, IPairCallback
         {
-            for (int i = 0; i < _movedCount; i++)
-            {
-                int key = _moved[i];
-                if (key < 0) continue;
-                DynamicAabbTree tree = TreeOf(key);
-                int node = key >> 1;
-                Aabb box = tree.FatAabb(node);
-                var finder = new PairFinder<T> { Callback = callback, Shape = tree.UserData(node), Node = node, Tree = MovingTree };
-                if (IsMoving(key))
-                {
-                    finder.Mode = PairFinderMode.SkipMovedBelow;
-                    MovingTree.Query(box, ref finder);
-                    finder.Tree = StaticTree;
-                    finder.Mode = PairFinderMode.TakeAll;
-                    StaticTree.Query(box, ref finder);
-                }
-                else
-                {
-                    finder.Mode = PairFinderMode.SkipMoved;
-                    MovingTree.Query(box, ref finder);
-                }
-                callback = finder.Callback;
-            }
+            if (search != null && pool != null && _movedCount >= PairSearch<T>.MinMoved)
+                search.Run(this, ref callback, _movedCount, pool);
+            else
+                for (int i = 0; i < _movedCount; i++) FindPairs(i, ref callback);
             for (int i = 0; i < _movedCount; i++)
                 if (_moved[i] >= 0) TreeOf(_moved[i]).SetMoved(_moved[i] >> 1, false);
             _movedCount = 0;
+        }
+
+        /// <summary>
+        /// The new overlaps of queued proxy <paramref name="i"/>, accepted pairs handed to
+        /// <paramref name="callback"/> in the order the trees are walked. Reads the trees only.
+        /// </summary>
+        public void FindPairs<T>(int i, ref T callback) where T : struct, IPairCallback
+        {
+            int key = _moved[i];
+            if (key < 0) return;
+            DynamicAabbTree tree = TreeOf(key);
+            int node = key >> 1;
+            Aabb box = tree.FatAabb(node);
+            var finder = new PairFinder<T> { Callback = callback, Shape = tree.UserData(node), Node = node, Tree = MovingTree };
+            if (IsMoving(key))
+            {
+                finder.Mode = PairFinderMode.SkipMovedBelow;
+                MovingTree.Query(box, ref finder);
+                finder.Tree = StaticTree;
+                finder.Mode = PairFinderMode.TakeAll;
+                StaticTree.Query(box, ref finder);
+            }
+            else
+            {
+                finder.Mode = PairFinderMode.SkipMoved;
+                MovingTree.Query(box, ref finder);
+            }
+            callback = finder.Callback;
         }
     }
 }

@@ -7,7 +7,13 @@ namespace Fulcrum.Collision
     /// </summary>
     internal interface IPairCallback
     {
-        /// <summary>Called once per new overlap of the fat boxes of shapes <paramref name="shapeA"/> and <paramref name="shapeB"/>.</summary>
+        /// <summary>
+        /// Whether the pair of shapes <paramref name="shapeA"/> and <paramref name="shapeB"/> may
+        /// become a contact. Reads only: the parallel pair search calls it from worker threads.
+        /// </summary>
+        bool Accepts(int shapeA, int shapeB);
+
+        /// <summary>Called once per new overlap the callback accepted, in the order of the serial search (on the stepping thread).</summary>
         void AddPair(int shapeA, int shapeB);
     }
 }

@@ -17,7 +17,7 @@ namespace Fulcrum.Collision
             if (userData == Shape) return true;
             if (Mode == PairFinderMode.SkipMovedBelow && proxyId < Node && Tree.WasMoved(proxyId)) return true;
             if (Mode == PairFinderMode.SkipMoved && Tree.WasMoved(proxyId)) return true;
-            Callback.AddPair(Shape, userData);
+            if (Callback.Accepts(Shape, userData)) Callback.AddPair(Shape, userData);
             return true;
         }
     }

@@ -25,6 +25,11 @@ namespace Fulcrum
         bool[] _refit = Array.Empty<bool>();
         Aabb[] _wantedBox = Array.Empty<Aabb>();
         BoundsJob? _boundsJob;
+        // The pair search on the worker pool (made when threads are first used).
+        PairSearch<PairFilter>? _pairSearch;
+
+        /// <summary>Steps whose pair search ran on the worker pool, and its blocks that filled their buffers (for tests).</summary>
+        internal (long Runs, long Overflows) ParallelPairSearch => _pairSearch == null ? (0, 0) : (_pairSearch.Runs, _pairSearch.Overflows);
 
         float SpeculativeBase => CollisionMargins.SpeculativeDistance(_settings.LinearSlop);
 
@@ -76,7 +81,9 @@ namespace Fulcrum
         /// <see cref="StepStage.BroadPhase"/>: refreshes the bounds of awake moving shapes, swept
         /// over their predicted motion in this step, moves the proxies whose swept bounds left
         /// their fat boxes (or whose fat boxes became far too loose), then finds the new pairs,
-        /// which the pair filter <see cref="AddPair"/> (through <see cref="PairFilter"/>) turns into contacts. Reads: body poses,
+        /// which the pair filter (<see cref="AcceptsPair"/> and <see cref="AddPair"/>, through
+        /// <see cref="PairFilter"/>) turns into contacts; with threads, the tree queries and the
+        /// filter's tests run on the worker pool first (<see cref="PairSearch{T}"/>). Reads: body poses,
         /// velocities and awake flags, shape geometry, layers and joints (through the filter).
         /// Writes: the shapes' world bounds, this step's shape poses and motion bounds, the
         /// proxies' fat boxes (and the step they changed), new contacts in the contact graph.
@@ -99,7 +106,8 @@ namespace Fulcrum
                 _fatBoxStep[i] = _stepIndex;
             }
             var filter = new PairFilter { World = this };
-            _broadPhase.UpdatePairs(ref filter);
+            if (pool != null) _pairSearch ??= new PairSearch<PairFilter>();
+            _broadPhase.UpdatePairs(ref filter, _pairSearch, pool);
         }
 
         /// <summary>Shapes a thread takes at a time in the bounds pass.</summary>
@@ -153,40 +161,47 @@ namespace Fulcrum
             return !(fat.Contains(swept) && fat.SurfaceArea <= 4f * wanted.SurfaceArea);
         }
 
-        // The broad phase's pair callback: hands each new overlap to the world's pair filter.
+        // The broad phase's pair callback: the world's pair filter.
         struct PairFilter : IPairCallback
         {
             public World World;
+            public bool Accepts(int shapeA, int shapeB) => World.AcceptsPair(shapeA, shapeB);
             public void AddPair(int shapeA, int shapeB) => World.AddPair(shapeA, shapeB);
         }
 
         /// <summary>
-        /// The pair filter: called by the broad phase for each new overlap of fat boxes.
-        /// Creates a contact when the shapes are on different bodies, at least one of which is
-        /// dynamic (or, for a sensor, not static), their layers accept each other, a pair
-        /// function exists and the pair is not known yet.
+        /// The pair filter's test, for each new overlap of fat boxes (reads only; the parallel
+        /// pair search runs it on workers): true when the shapes are on different bodies, at
+        /// least one of which is dynamic (or, for a sensor, not static), their layers accept
+        /// each other, no joint between the bodies turns collision off, the pair is not
+        /// ignored and a pair function exists.
         /// </summary>
-        void AddPair(int shapeA, int shapeB)
+        bool AcceptsPair(int shapeA, int shapeB)
         {
             ShapeStorage s = Shapes;
             int bodyA = s.Body[shapeA], bodyB = s.Body[shapeB];
-            if (bodyA == bodyB) return;
+            if (bodyA == bodyB) return false;
             bool sensor = s.IsSensor[shapeA] || s.IsSensor[shapeB];
             BodyType ta = Bodies.Type[bodyA], tb = Bodies.Type[bodyB];
-            if (sensor ? ta == BodyType.Static && tb == BodyType.Static : ta != BodyType.Dynamic && tb != BodyType.Dynamic) return;
-            if ((s.CollidesWith[shapeA] & (1u << s.Layer[shapeB])) == 0 || (s.CollidesWith[shapeB] & (1u << s.Layer[shapeA])) == 0) return;
-            if (!sensor && JointBlocksCollision(bodyA, bodyB)) return;
-            if (IgnoresPair(shapeA, shapeB)) return;
-            ShapeType ka = s.Geometry[shapeA].Type, kb = s.Geometry[shapeB].Type;
-            if (!CollisionTable.Has(ka, kb)) return;
+            if (sensor ? ta == BodyType.Static && tb == BodyType.Static : ta != BodyType.Dynamic && tb != BodyType.Dynamic) return false;
+            if ((s.CollidesWith[shapeA] & (1u << s.Layer[shapeB])) == 0 || (s.CollidesWith[shapeB] & (1u << s.Layer[shapeA])) == 0) return false;
+            if (!sensor && JointBlocksCollision(bodyA, bodyB)) return false;
+            if (IgnoresPair(shapeA, shapeB)) return false;
+            return CollisionTable.Has(s.Geometry[shapeA].Type, s.Geometry[shapeB].Type);
+        }
+
+        /// <summary>
+        /// Creates the contact of an accepted pair (<see cref="AcceptsPair"/>) unless the pair is
+        /// known already. Shape A is the one with the lower type (the table's order), ties
+        /// broken by slot.
+        /// </summary>
+        void AddPair(int shapeA, int shapeB)
+        {
             if (ContactGraph.Find(shapeA, shapeB) >= 0) return;
-            // Shape A has the lower type (the table's order), ties broken by slot.
-            if (kb < ka || (kb == ka && shapeB < shapeA))
-            {
-                (shapeA, shapeB) = (shapeB, shapeA);
-                (bodyA, bodyB) = (bodyB, bodyA);
-            }
-            ContactGraph.Create(shapeA, shapeB, bodyA, bodyB, sensor);
+            ShapeStorage s = Shapes;
+            ShapeType ka = s.Geometry[shapeA].Type, kb = s.Geometry[shapeB].Type;
+            if (kb < ka || (kb == ka && shapeB < shapeA)) (shapeA, shapeB) = (shapeB, shapeA);
+            ContactGraph.Create(shapeA, shapeB, s.Body[shapeA], s.Body[shapeB], s.IsSensor[shapeA] || s.IsSensor[shapeB]);
         }
     }
 }

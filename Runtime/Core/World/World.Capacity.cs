@@ -41,6 +41,10 @@ namespace Fulcrum
             // later gets them sized from the reserved pairs on first use.
             if (_settings.Threads > 1) ParallelScheduler();
             _narrowPhase.ReserveParallel(pairs, _settings.Threads);
+            // New pairs in one step: all of them in the first step, when every proxy is new (a
+            // block that still fills is searched on the stepping thread, not lost; 16 bytes a
+            // pair against the contact's own 88).
+            if (_settings.Threads > 1) (_pairSearch ??= new Collision.PairSearch<PairFilter>()).Reserve(pairs, _settings.Threads);
             if (_solvedInStep.Length < slots) Array.Resize(ref _solvedInStep, slots);
         }
 
