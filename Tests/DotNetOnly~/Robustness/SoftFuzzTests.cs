@@ -77,8 +77,11 @@ namespace Fulcrum.Tests.Robustness
         // box pinned at one corner and knocked to the ground stretched the tet at the pin to 400
         // times its volume and back): 47 passes, none fails newly: 2/0/0 -> 1/0/0 (over seeds
         // 0-999 14 -> 13).
+        // Then the tets next to an inverted one were held at J >= 0.02 instead of left free (a
+        // sphere pinned under a heavy body had its inversion spread tet by tet): 94 and 246 pass,
+        // 959 diverges newly: 1/0/0 and 1/0/1 -> 1/0/0 and 1/0/0 (over seeds 0-999 13 -> 12).
         [TestCase(0, 50, 1, 0, 0)]
-        [TestCase(50, 50, 1, 0, 1)]
+        [TestCase(50, 50, 1, 0, 0)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
             var failures = new List<string>();
@@ -124,8 +127,11 @@ namespace Fulcrum.Tests.Robustness
         // Newton step took into the ground out alone, and a tet ended at J -0.49), 47 (a 122 kg
         // Newton box at E 7.7e3 Pa pinned at one corner, knocked to the ground by a 343 kg body:
         // the tet at the pin went from 5 to 98 times its volume in a step and 400 in six, and
-        // back, and was reported as blown apart and frozen).
+        // back, and was reported as blown apart and frozen), 94 (a 28 kg Newton sphere at
+        // E 2.3e3 Pa pinned to a 2.9 t body that lands on it on a slope: one tet inverted, its
+        // neighbours were left without a floor, and the inversion spread to 58 of 120 tets).
         [TestCase(47)]
+        [TestCase(94)]
         [TestCase(237)]
         [TestCase(639)]
         [TestCase(991)]
