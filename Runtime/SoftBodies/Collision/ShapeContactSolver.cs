@@ -43,7 +43,7 @@ namespace Fulcrum.SoftBodies
         // One immovable shape's patch of Newton vertices in a pass (see HoldPatch): vertex, slip
         // direction, contact point, and the correction that holds the whole slip.
         int[] _patchVertex = Array.Empty<int>();
-        Vector3[] _patchTangent = Array.Empty<Vector3>(), _patchContact = Array.Empty<Vector3>();
+        Vector3[] _patchTangent = Array.Empty<Vector3>(), _patchContact = Array.Empty<Vector3>(), _patchNormal = Array.Empty<Vector3>();
         float[] _patchSlip = Array.Empty<float>();
         // Per vertex: whether static friction held its whole slip against a shape in this
         // substep, and in the last one (a resting contact; see Solve).
@@ -56,6 +56,17 @@ namespace Fulcrum.SoftBodies
         // Per vertex: 1 + the slot of the dynamic body the Newton solver's step met it against
         // in this substep (0: none); see MetByNewton.
         int[] _newtonOwner = Array.Empty<int>();
+        // Per vertex: whether it was within reach of an immovable shape while its body was at rest
+        // (HoldPatch), in this substep and in the last, with the shape's normal and the velocity
+        // of its surface there: the Newton step holds such a vertex across the normal (Sticks).
+        bool[] _restNow = Array.Empty<bool>(), _restLast = Array.Empty<bool>();
+        Vector3[] _restVelocityNow = Array.Empty<Vector3>(), _restVelocityLast = Array.Empty<Vector3>();
+        Vector3[] _restNormalNow = Array.Empty<Vector3>(), _restNormalLast = Array.Empty<Vector3>();
+        // Per vertex over the current substep: the friction impulse (kg m, along the way it pulled)
+        // that the Newton step's sticking spring carried (see Stuck).
+        Vector3[] _stick = Array.Empty<Vector3>();
+        // Per vertex over the current substep: the part of the cone the sticking springs spent (CapSticks).
+        float[] _stickHeld = Array.Empty<float>();
 
         // The body's outward-wound surface triangles (ShapeFeatureContacts), copied once, with
         // each one's tet: its fourth vertex and six times its rest volume.
@@ -183,13 +194,16 @@ namespace Fulcrum.SoftBodies
             return heaviest;
         }
 
-        /// <summary>Writes what the next step reads: which vertices an immovable shape held in the last substep, and the normals, which static friction held, and which vertices' surface triangles a shape's feature met.</summary>
+        /// <summary>Writes what the next step reads: which vertices an immovable shape held in the last substep, and the normals, which static friction held, which vertices' surface triangles a shape's feature met, and which vertices rest on a shape (with its normal and surface velocity there).</summary>
         internal void WriteState(StateWriter w)
         {
             w.WriteArray(_holdNow);
             w.WriteArray(_normal);
             w.WriteArray(_stuckNow);
             w.WriteArray(_featureMetNow);
+            w.WriteArray(_restNow);
+            w.WriteArray(_restNormalNow);
+            w.WriteArray(_restVelocityNow);
         }
 
         /// <summary>Reads what <see cref="WriteState"/> wrote; the returned action applies it.</summary>
@@ -201,8 +215,17 @@ namespace Fulcrum.SoftBodies
             bool[] met = r.ReadArray<bool>("soft contact features met");
             if (met.Length != 0 && met.Length != vertexCount) throw r.Error($"soft contact features met for {met.Length} of {vertexCount} vertices.");
             if (held.Length != 0 && held.Length < vertexCount) throw r.Error($"soft contact holds for {held.Length} of {vertexCount} vertices.");
+            bool[] rest = r.ReadArrayExactly<bool>("soft contact rests", held.Length);
+            Vector3[] restNormal = r.ReadArrayExactly<Vector3>("soft contact rest normals", held.Length);
+            Vector3[] restVelocity = r.ReadArrayExactly<Vector3>("soft contact rest surface velocities", held.Length);
             return () =>
             {
+                _restNow = rest;
+                _restLast = new bool[held.Length];
+                _restNormalNow = restNormal;
+                _restNormalLast = new Vector3[held.Length];
+                _restVelocityNow = restVelocity;
+                _restVelocityLast = new Vector3[held.Length];
                 _holdNow = held;
                 _holdLast = new bool[held.Length];
                 _normal = normal;
@@ -224,8 +247,11 @@ namespace Fulcrum.SoftBodies
             _patchVertex = new int[vertexCount];
             _patchTangent = new Vector3[vertexCount];
             _patchContact = new Vector3[vertexCount];
+            _patchNormal = new Vector3[vertexCount];
             _patchSlip = new float[vertexCount];
             _newtonOwner = new int[vertexCount];
+            _stick = new Vector3[vertexCount];
+            _stickHeld = new float[vertexCount];
         }
 
         /// <summary>
@@ -286,6 +312,24 @@ namespace Fulcrum.SoftBodies
             if (impulse > _support[i]) _support[i] = impulse;
         }
 
+        /// <summary>
+        /// True when vertex <paramref name="i"/> was within reach of an immovable shape in the last
+        /// substep while its body was at rest (<see cref="HoldPatch"/>), with the shape's normal
+        /// and the velocity of its surface there: the Newton step holds it across the normal
+        /// (ImplicitNewtonSolver.Stick) and reports the friction that took (<see cref="Stuck"/>),
+        /// which <see cref="CapSticks"/> holds to the patch's cone.
+        /// </summary>
+        public bool Sticks(int i, out Vector3 normal, out Vector3 surfaceVelocity)
+        {
+            bool sticks = i < _restLast.Length && _restLast[i];
+            normal = sticks ? _restNormalLast[i] : Vector3.Zero;
+            surfaceVelocity = sticks ? _restVelocityLast[i] : Vector3.Zero;
+            return sticks;
+        }
+
+        /// <summary>The friction impulse (kg m, along the way the vertex was pulled) the Newton step's sticking spring carried at vertex <paramref name="i"/> in this substep.</summary>
+        public void Stuck(int i, Vector3 impulse) => _stick[i] = impulse;
+
         /// <summary>True (with its normal) when an immovable shape pushed vertex <paramref name="i"/> in this substep or the last.</summary>
         public bool Touches(int i, out Vector3 normal)
         {
@@ -309,6 +353,12 @@ namespace Fulcrum.SoftBodies
                 AllocateSubstepScratch(vertexCount);
                 _stuckNow = new bool[vertexCount];
                 _stuckLast = new bool[vertexCount];
+                _restNow = new bool[vertexCount];
+                _restLast = new bool[vertexCount];
+                _restVelocityNow = new Vector3[vertexCount];
+                _restVelocityLast = new Vector3[vertexCount];
+                _restNormalNow = new Vector3[vertexCount];
+                _restNormalLast = new Vector3[vertexCount];
                 _normal = new Vector3[vertexCount];
                 _holdNow = new bool[vertexCount];
                 _holdLast = new bool[vertexCount];
@@ -338,6 +388,18 @@ namespace Fulcrum.SoftBodies
             _stuckLast = _stuckNow;
             _stuckNow = last;
             Array.Clear(_stuckNow, 0, vertexCount);
+            last = _restLast;
+            _restLast = _restNow;
+            _restNow = last;
+            Array.Clear(_restNow, 0, vertexCount);
+            Vector3[] velocities = _restVelocityLast;
+            _restVelocityLast = _restVelocityNow;
+            _restVelocityNow = velocities;
+            velocities = _restNormalLast;
+            _restNormalLast = _restNormalNow;
+            _restNormalNow = velocities;
+            Array.Clear(_stick, 0, vertexCount);
+            Array.Clear(_stickHeld, 0, vertexCount);
             Array.Clear(_pushed, 0, vertexCount);
             Array.Clear(_held, 0, vertexCount);
             Array.Clear(_support, 0, vertexCount);
@@ -374,6 +436,7 @@ namespace Fulcrum.SoftBodies
         /// <summary>How closely a patch's slips must point one way for it to be held as one: 0.8 (see <see cref="HoldPatch"/>).</summary>
         const float Coherent = 0.8f;
 
+
         /// <summary>How many times its own cone a vertex of a resting patch may be held by: 2 (1.5 and 3 measured the same).</summary>
         const float Borrow = 2f;
 
@@ -394,7 +457,13 @@ namespace Fulcrum.SoftBodies
         }
 
         // A patch vertex that touched the shape in the last substep too (not one arriving now).
-        bool Settled(int p) => _holdLast[_patchVertex[p]];
+        bool Settled(int p) => _holdLast[_patchVertex[p]] || _restLast[_patchVertex[p]];
+
+        // A vertex of the patch taken with the others (HoldPatch): every vertex within reach of a
+        // body at rest (the ground springs hold its vertices at the collision radius, and which
+        // of them the contact pass pushed changes from substep to substep while the body's whole
+        // weight is on them), else those that settled (not one arriving now).
+        bool Member(int p, bool still) => still || Settled(p);
 
         /// <summary>
         /// Friction of a Newton body against one immovable shape, over the patch of its vertices
@@ -430,12 +499,13 @@ namespace Fulcrum.SoftBodies
         /// </summary>
         void HoldPatch(SoftBody body, int count, float mu, int owner, RigidCoupling coupling, float h, Vector3 gravityStep, bool still)
         {
+            CapSticks(body, count, mu, still);
             double cone = 0, need = 0;
             Vector3 net = Vector3.Zero;
             int members = 0, stuck = 0;
             for (int p = 0; p < count; p++)
             {
-                if (!Settled(p)) continue;
+                if (!Member(p, still)) continue;
                 int i = _patchVertex[p];
                 members++;
                 cone += mu * (_pushed[i] + _support[i]) - _held[i];
@@ -453,7 +523,7 @@ namespace Fulcrum.SoftBodies
                 double spare = 0, deficit = 0;
                 for (int p = 0; p < count; p++)
                 {
-                    if (!Settled(p)) continue;
+                    if (!Member(p, still)) continue;
                     int i = _patchVertex[p];
                     float own = MathF.Max(0f, mu * (_pushed[i] + _support[i]) - _held[i]);
                     spare += Math.Max(0, own - _patchSlip[p]);
@@ -465,14 +535,14 @@ namespace Fulcrum.SoftBodies
             {
                 int i = _patchVertex[p];
                 float slip = _patchSlip[p], own = mu * (_pushed[i] + _support[i]) - _held[i], dlt;
-                if (spill && Settled(p))
+                if (spill && Member(p, still))
                 {
                     float cap = MathF.Max(0f, own);
                     dlt = slip <= cap ? slip : cap + share * (slip - cap);
                     if (holds) dlt = MathF.Min(dlt, Borrow * cap);
                     if (slip <= cap && slip > 0f) _stuckNow[i] = true;
                 }
-                else if (pooled && Settled(p))
+                else if (pooled && Member(p, still))
                 {
                     float most = Borrow * MathF.Max(0f, own);
                     dlt = MathF.Min(slip, most);
@@ -487,6 +557,71 @@ namespace Fulcrum.SoftBodies
                 }
                 Slide(body, i, owner, _patchContact[p], _patchTangent[p], dlt, coupling, h, gravityStep);
             }
+            // A body at rest on the shape sticks to it in the next substep's Newton step (Sticks).
+            if (!still || !Unpinned(body)) return;
+            for (int p = 0; p < count; p++)
+            {
+                int i = _patchVertex[p];
+                _restNow[i] = true;
+                _restVelocityNow[i] = coupling.PointVelocity(owner, _patchContact[p]);
+                _restNormalNow[i] = _patchNormal[p];
+            }
+        }
+
+        /// <summary>
+        /// The friction the Newton step's sticking springs took at this patch (<see cref="Sticks"/>,
+        /// reported by <see cref="Stuck"/>), as one force like a rigid solver's manifold friction,
+        /// within the patch's cone: beyond it the whole body slides on by the excess, spread over
+        /// its mass (Coulomb's kinetic friction), and the cone it used is spent.
+        /// </summary>
+        void CapSticks(SoftBody body, int count, float mu, bool still)
+        {
+            Vector3 sticks = Vector3.Zero;
+            for (int p = 0; p < count; p++) if (Member(p, still)) sticks += _stick[_patchVertex[p]];
+            if (sticks == Vector3.Zero) return;
+            // A later iteration's step holds the body from the substep's start again, and its
+            // report replaces the last: the cone an earlier one spent is given back first.
+            double cone = 0;
+            for (int p = 0; p < count; p++)
+            {
+                if (!Member(p, still)) continue;
+                int i = _patchVertex[p];
+                _held[i] -= _stickHeld[i];
+                _stickHeld[i] = 0f;
+                cone += MathF.Max(0f, mu * (_pushed[i] + _support[i]) - _held[i]);
+            }
+            float taken = sticks.Length();
+            if (taken > cone)
+            {
+                Vector3 excess = (float)((taken - cone) / taken) * sticks;
+                Vector3[] x = body.X;
+                float[] m = body.M, free = body.FreeW;
+                double mass = 0;
+                for (int i = 0; i < x.Length; i++) if (free[i] != 0f) mass += m[i];
+                if (mass > 0)
+                {
+                    Vector3 d = excess / (float)mass;
+                    for (int i = 0; i < x.Length; i++) if (free[i] != 0f) x[i] += d;
+                }
+            }
+            float used = cone > 0 ? (float)Math.Min(1.0, taken / cone) : 0f;
+            for (int p = 0; p < count; p++)
+            {
+                if (!Member(p, still)) continue;
+                int i = _patchVertex[p];
+                _stickHeld[i] = used * MathF.Max(0f, mu * (_pushed[i] + _support[i]) - _held[i]);
+                _held[i] += _stickHeld[i];
+                _stick[i] = Vector3.Zero;
+            }
+        }
+
+        // Whether every vertex of the body is free (nothing pinned or attached): only such a body
+        // sticks as a whole and slides on by a uniform move (CapSticks).
+        static bool Unpinned(SoftBody body)
+        {
+            float[] free = body.FreeW;
+            for (int i = 0; i < free.Length; i++) if (free[i] == 0f) return false;
+            return true;
         }
 
         // Friction's correction dlt (kg m) at vertex i along -t, counted against the cone. For a
@@ -585,6 +720,7 @@ namespace Fulcrum.SoftBodies
                         _patchVertex[patch] = i;
                         _patchTangent[patch] = along;
                         _patchContact[patch] = contact;
+                        _patchNormal[patch] = n;
                         _patchSlip[patch++] = slip < 1e-9f ? 0f : slip / wi;
                         continue;
                     }
