@@ -117,5 +117,39 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(MathF.Abs(moved), Is.LessThan(0.001f), "holds");
             Assert.That(end.MinJ, Is.GreaterThan(0.5f));
         }
+
+        // A ramp is a box tilted 20 degrees, held in place by being static, kinematic, or dynamic
+        // with all six axes locked (Unity's FreezeAll); mu 15 % above tan(angle). The locked
+        // dynamic ramp was met as a dynamic body of zero inverse mass: the Newton step's share of
+        // it was infinite, the step was skipped, and the cube slid 4.1 m in the second second, as
+        // on ice (an XPBD cube held). A body locked on all axes is now met as a static one.
+        [TestCase(BodyType.Static, SoftSolver.Newton)]
+        [TestCase(BodyType.Kinematic, SoftSolver.Newton)]
+        [TestCase(BodyType.Dynamic, SoftSolver.Newton)]
+        [TestCase(BodyType.Dynamic, SoftSolver.Xpbd)]
+        public void A_cube_holds_on_a_ramp_whatever_holds_the_ramp_in_place(BodyType type, SoftSolver solver)
+        {
+            float angle = 20f * MathF.PI / 180f, mu = 1.15f * MathF.Tan(angle);
+            var world = new World();
+            Quaternion tilt = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
+            Vector3 normal = Vector3.Transform(Vector3.UnitY, tilt), down = -Vector3.Transform(Vector3.UnitX, tilt);
+            BodyDef rampDef = type == BodyType.Static ? BodyDef.Static(Vector3.Zero) : type == BodyType.Kinematic ? BodyDef.Kinematic(Vector3.Zero) : BodyDef.Dynamic(Vector3.Zero);
+            rampDef.Rotation = tilt;
+            if (type == BodyType.Dynamic) rampDef.Mass = 1000f;
+            BodyHandle ramp = world.CreateBody(rampDef);
+            if (type == BodyType.Dynamic) world.SetAxisLocks(ramp, AxisLocks.All);
+            world.AddShape(ramp, ShapeDef.Of(ShapeGeometry.Box(new Vector3(2f, 0.1f, 2f))).With((ref ShapeDef s) => s.Friction = mu));
+            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.3f), 3, 3, 3), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e6f, 0.49f, 1000f), normal * 0.256f);
+            def.Rotation = tilt;
+            def.Solver = solver;
+            def.Friction = mu;
+            SoftBody cube = world.GetSoftBody(world.CreateSoftBody(def));
+            SoftBodyScenes.Run(world, 60);
+            Vector3 half = cube.ComputeStats().Centroid;
+            SoftBodyScenes.Run(world, 60);
+            float moved = Vector3.Dot(cube.ComputeStats().Centroid - half, down);
+            TestContext.Out.WriteLine($"{solver} cube on a {type} ramp: moved {moved * 1000:F3} mm in the second second");
+            Assert.That(MathF.Abs(moved), Is.LessThan(0.001f));
+        }
     }
 }

@@ -157,6 +157,16 @@ namespace Fulcrum.SoftBodies
         }
 
         /// <summary>
+        /// Whether the body in <paramref name="slot"/> can be moved by a soft body: dynamic and not
+        /// locked on all six axes (<see cref="AxisLocks.All"/>). A body locked on all of them is met
+        /// as a static one is (as attachments already took it): a Newton body's step met it as a
+        /// dynamic body of zero inverse mass, whose share of the step was infinite, the step was
+        /// skipped, and a Newton cube slid down such a ramp as on ice.
+        /// </summary>
+        public static bool Movable(BodyStorage b, int slot) =>
+            b.Type[slot] == BodyType.Dynamic && (b.Locks[slot] & AxisLocks.All) != AxisLocks.All;
+
+        /// <summary>
         /// The inverse mass a dynamic body shows along <paramref name="direction"/> (unit) at
         /// <paramref name="point"/>: 1/m + (r x n) . I^-1 (r x n); 0 for static and kinematic bodies.
         /// </summary>

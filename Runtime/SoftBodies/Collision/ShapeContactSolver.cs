@@ -177,7 +177,7 @@ namespace Fulcrum.SoftBodies
             {
                 int shape = _shapes[k];
                 int owner = s.Body[shape];
-                if (b.Type[owner] != BodyType.Dynamic || b.Mass[owner] <= heaviest) continue;
+                if (!RigidCoupling.Movable(b, owner) || b.Mass[owner] <= heaviest) continue;
                 Aabb near = _swept[k].Expanded(_reach);
                 // The body is at its start-of-step pose here (RigidCoupling.Track put it back).
                 Pose pose = world.ShapeWorldPose(shape);
@@ -272,7 +272,7 @@ namespace Fulcrum.SoftBodies
             {
                 int shape = _shapes[k];
                 int slot = s.Body[shape];
-                if (b.Type[slot] != BodyType.Dynamic) continue;
+                if (!RigidCoupling.Movable(b, slot)) continue;
                 Pose pose = world.ShapeWorldPose(shape);
                 ShapeGeometry geometry = s.Geometry[shape];
                 float mu = Combine.Values(body.Friction, s.FrictionCombine[shape], s.Friction[shape], s.FrictionCombine[shape]);
@@ -422,7 +422,7 @@ namespace Fulcrum.SoftBodies
             for (int k = 0; k < _count; k++)
             {
                 int shape = _shapes[k];
-                if (b.Type[s.Body[shape]] == BodyType.Dynamic) continue;
+                if (RigidCoupling.Movable(b, s.Body[shape])) continue;
                 if (!ShapeDistance.Query(s.Geometry[shape], world.ShapeWorldPose(shape), x, radius, out float distance, out Vector3 n)) continue;
                 float depth = radius - distance;
                 if (!(depth > deepest)) continue;
@@ -676,7 +676,7 @@ namespace Fulcrum.SoftBodies
                 ShapeGeometry geometry = s.Geometry[shape];
                 float mu = Combine.Values(body.Friction, s.FrictionCombine[shape], s.Friction[shape], s.FrictionCombine[shape]);
                 // A Newton body's friction against an immovable shape goes patch by patch.
-                bool patchFriction = byVelocity && world.Bodies.Type[owner] != BodyType.Dynamic;
+                bool patchFriction = byVelocity && !RigidCoupling.Movable(world.Bodies, owner);
                 int patch = 0;
                 for (int i = 0; i < x.Length; i++)
                 {
@@ -736,7 +736,7 @@ namespace Fulcrum.SoftBodies
                 if (patch > 0) HoldPatch(body, patch, mu, owner, coupling, h, gravityStep, still);
                 // The shape's corners and edges against the surface triangles (a tet body's).
                 if (normal && body.Tets.Length > 0 && geometry.Type != ShapeType.Plane
-                    && !(world.Bodies.Type[owner] == BodyType.Dynamic && world.Bodies.Mass[owner] > ShapeFeatureContacts.MaxLoadRatio * body.TotalMass))
+                    && !(RigidCoupling.Movable(world.Bodies, owner) && world.Bodies.Mass[owner] > ShapeFeatureContacts.MaxLoadRatio * body.TotalMass))
                     ShapeFeatureContacts.Solve(body, _surface!, _apex, _restVolume6, geometry, pose, owner, coupling, h, mu, _trianglePushed, _triangleHeld, _featureMetLast, _featureMetNow);
             }
             // Meshes only before the elastic pass: a second friction pass there let a jelly falling
