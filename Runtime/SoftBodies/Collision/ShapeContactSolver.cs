@@ -436,7 +436,6 @@ namespace Fulcrum.SoftBodies
         /// <summary>How closely a patch's slips must point one way for it to be held as one: 0.8 (see <see cref="HoldPatch"/>).</summary>
         const float Coherent = 0.8f;
 
-
         /// <summary>How many times its own cone a vertex of a resting patch may be held by: 2 (1.5 and 3 measured the same).</summary>
         const float Borrow = 2f;
 
@@ -456,7 +455,8 @@ namespace Fulcrum.SoftBodies
             return true;
         }
 
-        // A patch vertex that touched the shape in the last substep too (not one arriving now).
+        // A patch vertex that touched the shape in the last substep too, or was within its reach
+        // while the body rested (not one arriving now).
         bool Settled(int p) => _holdLast[_patchVertex[p]] || _restLast[_patchVertex[p]];
 
         // A vertex of the patch taken with the others (HoldPatch): every vertex within reach of a
@@ -482,7 +482,9 @@ namespace Fulcrum.SoftBodies
         ///   so a sliding patch brakes with the cone of them all.
         /// The vertices arriving now, and patches whose slips spread apart (a slab crushed by a
         /// crate: the ground under its middle cannot hold its edges), take each vertex within its
-        /// own cone.
+        /// own cone. Of a body at rest every vertex within reach is taken with the patch, the
+        /// friction its Newton step's sticking springs took is first held to the patch's cone
+        /// (<see cref="CapSticks"/>), and the vertices stick in the next step (<see cref="Sticks"/>).
         /// Per vertex, the normal impulses a Newton step's springs measure (<see cref="Support"/>)
         /// spread over a face unlike the pull along it: resting, the vertices short of load
         /// slipped every substep, downhill only (a cube on a 30 degree slope at mu 0.8 crept
