@@ -17,6 +17,23 @@ namespace Fulcrum.Tests.SoftBodies
     /// </summary>
     public class NewtonFrictionTests
     {
+        // A 0.3 m cube (3 cells, 1000 kg/m^3) set at rest on a plane tilted by degrees about z,
+        // mu for both; the unit vector down the slope.
+        static (World, SoftBody, Vector3) CubeOnSlope(float degrees, float mu, float youngs, float poisson, SoftSolver solver)
+        {
+            float angle = degrees * MathF.PI / 180f;
+            var world = new World();
+            var normal = new Vector3(-MathF.Sin(angle), MathF.Cos(angle), 0);
+            BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Zero));
+            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(normal, 0f)).With((ref ShapeDef s) => s.Friction = mu));
+            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.3f), 3, 3, 3), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, poisson, 1000f), normal * 0.156f);
+            def.Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
+            def.Solver = solver;
+            def.Friction = mu;
+            SoftBody cube = world.GetSoftBody(world.CreateSoftBody(def));
+            return (world, cube, new Vector3(-MathF.Cos(angle), -MathF.Sin(angle), 0));
+        }
+
         // A 1 x 0.2 x 1 m slab (6 x 2 x 6 cells) set on the ground at 1 m/s; mu is the mean of
         // the ground's 0.5 and the slab's 0.6. Measured: 0.093-0.094 m (Newton), 0.091-0.092 m
         // (XPBD) against 0.0927 m.
@@ -63,16 +80,7 @@ namespace Fulcrum.Tests.SoftBodies
         public void A_cube_on_a_slope_holds_or_slides_as_coulomb_friction_says(SoftSolver solver, float mu, float degrees, float youngs, float poisson, float creep)
         {
             float angle = degrees * MathF.PI / 180f;
-            var world = new World();
-            var normal = new Vector3(-MathF.Sin(angle), MathF.Cos(angle), 0);
-            var down = new Vector3(-MathF.Cos(angle), -MathF.Sin(angle), 0);
-            BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Zero));
-            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(normal, 0f)).With((ref ShapeDef s) => s.Friction = mu));
-            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.3f), 3, 3, 3), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, poisson, 1000f), normal * 0.156f);
-            def.Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
-            def.Solver = solver;
-            def.Friction = mu;
-            SoftBody cube = world.GetSoftBody(world.CreateSoftBody(def));
+            (World world, SoftBody cube, Vector3 down) = CubeOnSlope(degrees, mu, youngs, poisson, solver);
             SoftBodyScenes.Run(world, 30);
             Vector3 half = cube.ComputeStats().Centroid;
             SoftBodyScenes.Run(world, 60);
@@ -100,17 +108,8 @@ namespace Fulcrum.Tests.SoftBodies
             [Values(SoftSolver.Newton, SoftSolver.Xpbd)] SoftSolver solver,
             [Values(1e5f, 1e6f, 1e7f, 1e8f, 1e9f)] float youngs, [Values(0.3f, 0.45f, 0.49f, 0.4999f)] float poisson, [Values(15f, 30f)] float degrees)
         {
-            float angle = degrees * MathF.PI / 180f, mu = 1.15f * MathF.Tan(angle);
-            var world = new World();
-            var normal = new Vector3(-MathF.Sin(angle), MathF.Cos(angle), 0);
-            var down = new Vector3(-MathF.Cos(angle), -MathF.Sin(angle), 0);
-            BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Zero));
-            world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(normal, 0f)).With((ref ShapeDef s) => s.Friction = mu));
-            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.3f), 3, 3, 3), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, poisson, 1000f), normal * 0.156f);
-            def.Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
-            def.Solver = solver;
-            def.Friction = mu;
-            SoftBody cube = world.GetSoftBody(world.CreateSoftBody(def));
+            float mu = 1.15f * MathF.Tan(degrees * MathF.PI / 180f);
+            (World world, SoftBody cube, Vector3 down) = CubeOnSlope(degrees, mu, youngs, poisson, solver);
             SoftBodyScenes.Run(world, 60);
             Vector3 settled = cube.ComputeStats().Centroid;
             SoftBodyScenes.Run(world, 60);
@@ -162,27 +161,14 @@ namespace Fulcrum.Tests.SoftBodies
         [Test]
         public void A_newton_cube_sticking_on_a_slope_saves_and_restores_bit_identically()
         {
-            static (World, SoftBody) Build()
-            {
-                float angle = 30f * MathF.PI / 180f;
-                var world = new World();
-                var normal = new Vector3(-MathF.Sin(angle), MathF.Cos(angle), 0);
-                BodyHandle ground = world.CreateBody(BodyDef.Static(Vector3.Zero));
-                world.AddShape(ground, ShapeDef.Of(ShapeGeometry.Plane(normal, 0f)).With((ref ShapeDef s) => s.Friction = 0.8f));
-                var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.3f), 3, 3, 3), new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e7f, 0.45f, 1000f), normal * 0.156f);
-                def.Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, angle);
-                def.Solver = SoftSolver.Newton;
-                def.Friction = 0.8f;
-                return (world, world.GetSoftBody(world.CreateSoftBody(def)));
-            }
-            (World a, SoftBody cube) = Build();
+            (World a, SoftBody cube, _) = CubeOnSlope(30f, 0.8f, 1e7f, 0.45f, SoftSolver.Newton);
             for (int s = 0; s < 60; s++) a.Step(1 / 60f);
             int sticking = 0;
             for (int i = 0; i < cube.X.Length; i++) if (cube.Contacts.Sticks(i, out _, out _)) sticking++;
             Assert.That(sticking, Is.GreaterThan(0), "the cube sticks when the state is saved");
             byte[] state = State.StateRoundTripTests.Save(a);
             for (int s = 0; s < 30; s++) a.Step(1 / 60f);
-            (World b, _) = Build();
+            (World b, _, _) = CubeOnSlope(30f, 0.8f, 1e7f, 0.45f, SoftSolver.Newton);
             State.StateRoundTripTests.Restore(b, state);
             for (int s = 0; s < 30; s++) b.Step(1 / 60f);
             Assert.That(State.StateRoundTripTests.Save(b), Is.EqualTo(State.StateRoundTripTests.Save(a)));
