@@ -46,10 +46,7 @@ namespace Fulcrum.Components
             get => _isTrigger;
             set
             {
-                ThrowIfStepping(nameof(isTrigger));
-                if (value == _isTrigger) return;
-                _isTrigger = value;
-                Rebuild();
+                if (SetFlag(ref _isTrigger, value, nameof(isTrigger))) Rebuild();
             }
         }
 

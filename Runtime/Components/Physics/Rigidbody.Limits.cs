@@ -41,9 +41,7 @@ namespace Fulcrum.Components
             get => _detectCollisions;
             set
             {
-                ThrowIfStepping(nameof(detectCollisions));
-                if (value == _detectCollisions) return;
-                _detectCollisions = value;
+                if (!SetFlag(ref _detectCollisions, value, nameof(detectCollisions))) return;
                 Collider[] attached = Colliders.ToArray();
                 foreach (Collider c in attached) c.Rebuild();
                 if (HasBody) World.GetBody(_body).WakeUp(); // a resting body must notice its support is gone

@@ -59,9 +59,7 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).LinearVelocity : _linearVelocity;
             set
             {
-                FieldCheck.Speed(value, this, "linearVelocity");
-                ThrowIfStepping(nameof(linearVelocity));
-                _linearVelocity = value;
+                SetSpeed(ref _linearVelocity, value, nameof(linearVelocity));
                 if (HasBody) World.GetBody(_body).LinearVelocity = value;
             }
         }
@@ -72,11 +70,18 @@ namespace Fulcrum.Components
             get => HasBody ? World.GetBody(_body).AngularVelocity : _angularVelocity;
             set
             {
-                FieldCheck.Speed(value, this, "angularVelocity");
-                ThrowIfStepping(nameof(angularVelocity));
-                _angularVelocity = value;
+                SetSpeed(ref _angularVelocity, value, nameof(angularVelocity));
                 if (HasBody) World.GetBody(_body).AngularVelocity = value;
             }
+        }
+
+        // The head of the two velocity setters: a finite speed within the input limit, refused
+        // mid-step, then stored; the caller then hands it to the live body.
+        void SetSpeed(ref Vector3 field, Vector3 value, string member)
+        {
+            FieldCheck.Speed(value, this, member);
+            ThrowIfStepping(member);
+            field = value;
         }
 
         /// <summary>
@@ -88,9 +93,7 @@ namespace Fulcrum.Components
             get => _isKinematic;
             set
             {
-                ThrowIfStepping(nameof(isKinematic));
-                if (value == _isKinematic) return;
-                _isKinematic = value;
+                if (!SetFlag(ref _isKinematic, value, nameof(isKinematic))) return;
                 if (!HasBody) return;
                 World.SetBodyType(_body, value ? BodyType.Kinematic : BodyType.Dynamic);
                 ApplyMass();

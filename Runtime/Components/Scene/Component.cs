@@ -66,6 +66,19 @@ namespace Fulcrum.Components
             field = value;
         }
 
+        /// <summary>
+        /// The head of a setter for a flag whose change must be applied (a rebuild, a new body
+        /// type): refuses the change while the world steps; false when <paramref name="field"/>
+        /// already holds <paramref name="value"/>, else stores it and returns true.
+        /// </summary>
+        internal bool SetFlag(ref bool field, bool value, string member)
+        {
+            ThrowIfStepping(member);
+            if (value == field) return false;
+            field = value;
+            return true;
+        }
+
         /// <summary>True when the entity is active in the hierarchy and the component not destroyed.</summary>
         internal bool IsLive => _entity != null && !isDestroyed && _entity.activeInHierarchy;
 

@@ -151,9 +151,17 @@ namespace Fulcrum.Scenes
         /// <summary>The spellings in <paramref name="table"/>, for messages: "x, y or z".</summary>
         internal static string Spellings<T>((T Value, string Name)[] table) where T : struct, Enum
         {
+            var names = new string[table.Length];
+            for (int i = 0; i < table.Length; i++) names[i] = table[i].Name;
+            return Spellings(names);
+        }
+
+        /// <summary><paramref name="names"/>, for messages: "x, y or z".</summary>
+        internal static string Spellings(string[] names)
+        {
             var sb = new StringBuilder();
-            for (int i = 0; i < table.Length; i++)
-                sb.Append(i == 0 ? "" : i == table.Length - 1 ? " or " : ", ").Append(table[i].Name);
+            for (int i = 0; i < names.Length; i++)
+                sb.Append(i == 0 ? "" : i == names.Length - 1 ? " or " : ", ").Append(names[i]);
             return sb.ToString();
         }
     }

@@ -74,14 +74,7 @@ namespace Fulcrum.Scenes
         {
             var members = new List<KeyValuePair<string, JsonValue>>();
             var names = new HashSet<string>(System.StringComparer.Ordinal); // linear duplicate check
-            _pos++; // '{'
-            SkipWhitespace();
-            if (Peek() == '}')
-            {
-                _pos++;
-                return JsonValue.Parsed(JsonKind.Object, null, false, null, members, path, line, column);
-            }
-            while (true)
+            for (bool more = Open('}'); more; more = Next(path, '}'))
             {
                 SkipWhitespace();
                 if (Peek() != '"') Fail(path, $"unexpected {Describe()}, expected a member name in double quotes");
@@ -95,11 +88,6 @@ namespace Fulcrum.Scenes
                 _pos++;
                 SkipWhitespace();
                 members.Add(new KeyValuePair<string, JsonValue>(key, ParseValue(memberPath, depth + 1)));
-                SkipWhitespace();
-                char c = Peek();
-                if (c == ',') { _pos++; continue; }
-                if (c == '}') { _pos++; break; }
-                Fail(path, $"unexpected {Describe()}, expected ',' or '}}'");
             }
             return JsonValue.Parsed(JsonKind.Object, null, false, null, members, path, line, column);
         }
@@ -107,24 +95,38 @@ namespace Fulcrum.Scenes
         JsonValue ParseArray(string path, int depth, int line, int column)
         {
             var items = new List<JsonValue>();
-            _pos++; // '['
-            SkipWhitespace();
-            if (Peek() == ']')
-            {
-                _pos++;
-                return JsonValue.Parsed(JsonKind.Array, null, false, items, null, path, line, column);
-            }
-            while (true)
+            for (bool more = Open(']'); more; more = Next(path, ']'))
             {
                 SkipWhitespace();
                 items.Add(ParseValue(JsonPath.Index(path, items.Count), depth + 1));
-                SkipWhitespace();
-                char c = Peek();
-                if (c == ',') { _pos++; continue; }
-                if (c == ']') { _pos++; break; }
-                Fail(path, $"unexpected {Describe()}, expected ',' or ']'");
             }
             return JsonValue.Parsed(JsonKind.Array, null, false, items, null, path, line, column);
+        }
+
+        // Steps past an object's or array's opening bracket: false, past the closing one too,
+        // when it is empty; true when a member or item follows.
+        bool Open(char close)
+        {
+            _pos++;
+            SkipWhitespace();
+            if (Peek() != close) return true;
+            _pos++;
+            return false;
+        }
+
+        // After a member or item: true past a ',' (another follows), false past the closing
+        // bracket; anything else is an error at the container's path.
+        bool Next(string path, char close)
+        {
+            SkipWhitespace();
+            char c = Peek();
+            if (c == ',' || c == close)
+            {
+                _pos++;
+                return c == ',';
+            }
+            Fail(path, $"unexpected {Describe()}, expected ',' or '{close}'");
+            return false;
         }
 
         string ParseString(string path, int maxLength, string what)

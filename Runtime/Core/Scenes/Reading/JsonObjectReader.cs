@@ -144,6 +144,19 @@ namespace Fulcrum.Scenes
             return false;
         }
 
+        /// <summary>
+        /// A member that is one of the strings <paramref name="allowed"/>: that string; null when
+        /// absent, not a string, or another string, which is reported as an unknown
+        /// <paramref name="key"/> with the allowed spellings.
+        /// </summary>
+        public string? OneOf(string key, params string[] allowed)
+        {
+            string? s = String(key);
+            if (s == null || System.Array.IndexOf(allowed, s) >= 0) return s;
+            Unknown(key, key, s, SceneNames.Spellings(allowed));
+            return null;
+        }
+
         /// <summary>Reports the member's string <paramref name="name"/> as no known <paramref name="what"/>, listing the <paramref name="expected"/> spellings.</summary>
         public void Unknown(string key, string what, string name, string expected) =>
             _d.Add(PathOf(key), $"unknown {what} '{name}' (expected {expected})", _obj[key]);

@@ -24,11 +24,7 @@ namespace Fulcrum.Scenes
             s.Substeps = r.OptionalInt("substeps");
             s.Iterations = r.OptionalInt("iterations");
             s.DampingTime = r.OptionalFloat("dampingTime");
-            if (r.String("solver") is string solver)
-            {
-                if (solver == "xpbd" || solver == "newton") s.Solver = solver;
-                else r.Unknown("solver", "solver", solver, "xpbd or newton");
-            }
+            if (r.OneOf("solver", "xpbd", "newton") is string solver) s.Solver = solver;
             s.LinearDamping = r.OptionalFloat("linearDamping");
             s.GravityScale = r.OptionalFloat("gravityScale");
             s.Friction = r.OptionalFloat("friction");
@@ -65,11 +61,7 @@ namespace Fulcrum.Scenes
                 case SceneSoftMeshType.Box:
                     var box = new SceneSoftBox { Size = r.Vector("size", Vector3.Zero, required: true) };
                     if (r.Ints("cells", 3) is int[] cells) box.Cells = cells;
-                    if (r.String("split") is string split)
-                    {
-                        if (split == "six" || split == "six-mirrored" || split == "five") box.Split = split;
-                        else r.Unknown("split", "split", split, "six, six-mirrored or five");
-                    }
+                    if (r.OneOf("split", "six", "six-mirrored", "five") is string split) box.Split = split;
                     mesh = box;
                     break;
                 case SceneSoftMeshType.Sphere:
