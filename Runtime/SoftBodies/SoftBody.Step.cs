@@ -148,6 +148,9 @@ namespace Fulcrum.SoftBodies
         /// <summary>Forgets what the last step's end measured (call after anything moves a vertex between steps).</summary>
         internal void PositionsChanged() => _cleanEnd = false;
 
+        /// <summary>Whether the last <see cref="KeepFinite"/> found the body diverged (and put it back).</summary>
+        internal bool DivergedInStep;
+
         /// <summary>
         /// True when every vertex position and velocity is finite and inside the world bounds
         /// and no tet has blown apart (its |J| beyond <see cref="MaxVolumeRatio"/> and more than
@@ -179,6 +182,7 @@ namespace Fulcrum.SoftBodies
                     _cleanEnd = !inverted;
                 }
             }
+            DivergedInStep = bad;
             if (!bad) return true;
             Array.Copy(XStart, X, X.Length);
             Array.Copy(XStart, XPrev, X.Length);

@@ -83,16 +83,24 @@ namespace Fulcrum.SoftBodies
                 for (int k = 0; k < count; k++) this[k].Substep(h, _coupling, pool);
                 if (_softContacts.PairCount > 0) _softContacts.Solve(h);
             }
+            bool diverged = false;
             for (int k = 0; k < count; k++)
             {
                 SoftBody body = this[k];
                 body.EndStep(dt);
                 if (body.KeepFinite()) continue;
+                diverged = true;
                 DivergenceCount++;
                 LastDiverged = body.Handle;
                 LastDivergedStep = world.StepIndex;
-                Diverged?.Invoke(LastDiverged, LastDivergedStep);
             }
+            if (!diverged) return;
+            // The rigid bodies as the rigid solve left them: what a diverging soft body pushed
+            // onto them in the step is not kept. Then the reports, with the world consistent.
+            _coupling.Restore();
+            if (Diverged == null) return;
+            for (int k = 0; k < count; k++)
+                if (this[k].DivergedInStep) Diverged(this[k].Handle, world.StepIndex);
         }
 
         /// <summary>
@@ -100,7 +108,9 @@ namespace Fulcrum.SoftBodies
         /// the world bounds (±<see cref="Limits.MaxPosition"/> m), or that blew apart (a tet's
         /// volume ratio went beyond <see cref="SoftBody.MaxVolumeRatio"/>, growing more than
         /// <see cref="SoftBody.BlowUpGrowth"/> times in the step), in a step, with the step index:
-        /// the body was put back at its pose from the start of that step, at rest.
+        /// the body was put back at its pose from the start of that step, at rest, and the rigid
+        /// bodies the soft bodies moved in that step were put back as the rigid solve left them
+        /// (what the soft bodies pushed onto them in the step is not kept).
         /// </summary>
         public event Action<SoftBodyHandle, long>? Diverged;
 

@@ -46,6 +46,9 @@ namespace Fulcrum.SoftBodies
         Vector3[] _angularAcceleration = Array.Empty<Vector3>();
         Vector3[] _correction = Array.Empty<Vector3>();
         Vector3[] _angularCorrection = Array.Empty<Vector3>();
+        // Dynamic bodies: the velocity the rigid solve left them with (Restore).
+        Vector3[] _endLinear = Array.Empty<Vector3>();
+        Vector3[] _endAngular = Array.Empty<Vector3>();
         int _count;
         float _dt;
         World _world = null!;
@@ -85,6 +88,8 @@ namespace Fulcrum.SoftBodies
             // Back to the start of the step; BeginSubstep integrates it again.
             Vector3 v0 = b.StartLinearVelocity[slot], w0 = b.StartAngularVelocity[slot];
             Vector3 v1 = b.LinearVelocity[slot], w1 = b.AngularVelocity[slot];
+            _endLinear[e] = v1;
+            _endAngular[e] = w1;
             float invDt = 1f / _dt;
             _acceleration[e] = (v1 - v0) * invDt;
             _angularAcceleration[e] = (w1 - w0) * invDt;
@@ -110,6 +115,29 @@ namespace Fulcrum.SoftBodies
             b.AngularVelocity[slot] = w0;
             b.SyncOriginFromCenter(slot);
             b.UpdateWorldInertia(slot);
+        }
+
+        /// <summary>
+        /// Puts every tracked dynamic body back where the rigid solve left it, pose and velocity:
+        /// what the soft bodies did to it in this step is undone. For a step in which a soft body
+        /// diverged (it is put back at its start, at rest): a 12 kg plate pinned to a soft sphere
+        /// that blew up was left with the 154 m/s the failing step had pushed onto it, went
+        /// through the ground and fell on (soft fuzz seed 42).
+        /// </summary>
+        public void Restore()
+        {
+            BodyStorage b = _bodies;
+            for (int e = 0; e < _count; e++)
+            {
+                int slot = _slot[e];
+                if (b.Type[slot] != BodyType.Dynamic) continue;
+                b.Center[slot] = _endCenter[e];
+                b.Rotation[slot] = _endRotation[e];
+                b.LinearVelocity[slot] = _endLinear[e];
+                b.AngularVelocity[slot] = _endAngular[e];
+                b.SyncOriginFromCenter(slot);
+                b.UpdateWorldInertia(slot);
+            }
         }
 
         /// <summary>
@@ -357,6 +385,8 @@ namespace Fulcrum.SoftBodies
             Array.Resize(ref _angularAcceleration, capacity);
             Array.Resize(ref _correction, capacity);
             Array.Resize(ref _angularCorrection, capacity);
+            Array.Resize(ref _endLinear, capacity);
+            Array.Resize(ref _endAngular, capacity);
         }
     }
 }
