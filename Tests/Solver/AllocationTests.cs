@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using System.Threading;
 using Fulcrum;
 using NUnit.Framework;
 using static Fulcrum.Tests.Solver.SolverTestScenes;
@@ -44,25 +43,11 @@ namespace Fulcrum.Tests.Solver
             w.CreateJoint(JointDef.ConeTwist(BodyHandle.None, d, new Vector3(8, 4, 0), new Vector3(0, 1, 0), -Vector3.UnitY, -Vector3.UnitY, 30, 20));
             BodyHandle e = Box(w, new Vector3(10, 3, 0), new Vector3(0.2f), 1f);
             w.CreateJoint(JointDef.Fixed(BodyHandle.None, e, new Vector3(10, 3, 0), Vector3.Zero));
-            for (int n = 0; n < 60; n++) w.Step(1f / 60f);
-            // The fewest bytes in any of three windows of 120 steps, each summed per step so that
-            // nothing but Step is inside the measurement. The runtime's tiered JIT may allocate a
-            // few bytes while it recompiles hot methods in the background (on a loaded machine it
-            // does so late: 3,096 bytes in one window of a CI run beside a Unity build, none run
-            // alone); a real per-step allocation shows in every window (AllocationProbe).
-            Thread.Sleep(150);
-            long allocated = long.MaxValue;
-            for (int window = 0; window < 3; window++)
-            {
-                long bytes = 0;
-                for (int n = 0; n < 120; n++)
-                {
-                    long before = GC.GetAllocatedBytesForCurrentThread();
-                    w.Step(1f / 60f);
-                    bytes += GC.GetAllocatedBytesForCurrentThread() - before;
-                }
-                allocated = Math.Min(allocated, bytes);
-            }
+            // The fewest bytes of three windows after a warm-up (AllocationProbe): the tiered JIT
+            // may allocate while it recompiles hot methods late on a loaded machine (3,096 bytes
+            // in one measured window of a CI run beside a Unity build, none run alone); a real
+            // per-step allocation shows in every window.
+            long allocated = Fulcrum.Tests.Components.AllocationProbe.SteadyStateBytes(() => w.Step(1f / 60f));
             if (threads > 1) Assert.That(w.SolverPoolForTests!.SplitCalls, Is.GreaterThan(0), "the step's passes ran on the worker pool");
             w.StopThreads();
             Assert.That(allocated, Is.EqualTo(0));
