@@ -50,7 +50,7 @@ namespace Fulcrum.Benchmarks
                     if (k == 1) ms = stepMs;
                     worstSlide[k] = MathF.Max(worstSlide[k], MathF.Abs(a));
                     worstHold[k] = MathF.Max(worstHold[k], MathF.Abs(hold));
-                    output.Write($" {Percent(a)} / {hold * 1000 + 0f:F2} |");
+                    output.Write($" {Percent(a)} / {hold * 1000:F2} |");
                 }
                 output.WriteLine($" {ms:F2} |");
             }
