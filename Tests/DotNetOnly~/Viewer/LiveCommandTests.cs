@@ -78,19 +78,28 @@ namespace Fulcrum.Tests.Viewer
         {
             int port = FreePort();
             var output = new StringWriter();
-            var error = new StringWriter();
-            var clock = Stopwatch.StartNew();
-            Task<int> run = Task.Run(() => Cli.Run(new[]
+            using var stop = new CancellationTokenSource();
+            var args = new Arguments("run", new[]
             {
-                "run", Scene("tower-10"), "--steps", "90", "--live", "--port", port.ToString(), "--viewer", FakeViewer(), "--live-exit",
-            }, TextWriter.Synchronized(output), TextWriter.Synchronized(error)));
-            // The page is checked in the next test, while the server is still serving: asked for
-            // here, the request raced the end of this 1.5 s run, and on a loaded machine (CI with
-            // the Unity run beside it) it came after the server had stopped (connection refused,
-            // or an empty page).
+                "run", Scene("tower-10"), "--steps", "90", "--live", "--live-speed", "0.5", "--port", port.ToString(), "--viewer", FakeViewer(),
+            }, 1, RunCommand.Flags, RunCommand.Switches);
+            TextWriter shared = TextWriter.Synchronized(output);
+            string Text() { lock (shared) return output.ToString(); }
+            var clock = Stopwatch.StartNew();
+            Task<int> run = Task.Run(() => RunCommand.Run(args, shared, stop.Token));
+            // The server keeps serving after the run until stopped, so a viewer that comes late on
+            // a loaded machine is still answered. (With --live-exit here the test raced the run:
+            // under CI load the first connection came after the 1.5 s run had ended and the
+            // server had gone, and every retry was refused.) 90 steps at half speed take 3 s,
+            // long enough that the viewer, connecting once the page is printed, sees frames arrive.
+            var deadline = DateTime.UtcNow.AddSeconds(30);
+            while (!Text().Contains("live: http") && DateTime.UtcNow < deadline && !run.IsCompleted) await Task.Delay(10);
             (byte[] bytes, int messages) = await ReceiveAll(port, TimeSpan.FromSeconds(30));
-            Assert.That(await run, Is.EqualTo(Cli.ExitOk), error.ToString());
+            while (!Text().Contains("still serving") && DateTime.UtcNow < deadline && !run.IsCompleted) await Task.Delay(10);
             double seconds = clock.Elapsed.TotalSeconds;
+            Assert.That(run.IsCompleted, Is.False, "still serving after the run");
+            stop.Cancel();
+            Assert.That(await run, Is.EqualTo(Cli.ExitOk));
 
             Recording rec = Recording.Read(bytes);
             Assert.That(rec.Truncated, Is.False);
@@ -98,10 +107,23 @@ namespace Fulcrum.Tests.Viewer
             Assert.That(rec.Bodies[1].Name, Is.EqualTo("tower/0"));
             Assert.That(rec.Frames.ConvertAll(f => f.Step), Is.EqualTo(Enumerable.Range(0, 91).Select(i => (long)i)));
             Assert.That(messages, Is.GreaterThan(1), "frames arrive as the run goes, not in one piece at the end");
-            // 90 steps of 1/60 s at real time: at least 1.5 s of wall time.
-            Assert.That(seconds, Is.GreaterThan(1.45));
-            Assert.That(output.ToString(), Does.Contain($"live: http://127.0.0.1:{port}/?live=%2Flive"));
-            Assert.That(output.ToString(), Does.Contain("recording: live, 91 frames"));
+            // 90 steps of 1/60 s at half real time: at least 3 s of wall time.
+            Assert.That(seconds, Is.GreaterThan(2.95));
+            Assert.That(Text(), Does.Contain($"live: http://127.0.0.1:{port}/?live=%2Flive"));
+            Assert.That(Text(), Does.Contain("recording: live, 91 frames"));
+        }
+
+        [Test]
+        public void With_live_exit_the_command_ends_with_the_run_when_no_viewer_is_connected()
+        {
+            var clock = Stopwatch.StartNew();
+            var (code, output, error) = Fulcrum("run", Scene("tower-10"), "--steps", "30", "--live", "--live-speed", "2",
+                "--port", FreePort().ToString(), "--viewer", FakeViewer(), "--live-exit");
+            Assert.That(code, Is.EqualTo(Cli.ExitOk), error);
+            Assert.That(output, Does.Contain("recording: live, 31 frames"));
+            Assert.That(output, Does.Not.Contain("still serving"));
+            // 30 steps at twice real time: 0.25 s; the exit does not wait out the 10 s grace for viewers.
+            Assert.That(clock.Elapsed.TotalSeconds, Is.GreaterThan(0.24).And.LessThan(9));
         }
 
         [Test]
