@@ -200,7 +200,7 @@ namespace Fulcrum.SoftBodies
                 for (int k = 0; k < _dofs; k++) slope += _gradient[k] * _rhs[k];
             }
             if (_bodyCount > 0) largest = Math.Max(largest, LargestCarried());
-            double step = largest > _reach ? _reach / largest : 1, taken = 0;
+            double step = largest > _reach ? _reach / largest : 1;
             _taken = 0;
             _shift = Vector3.Zero;
             for (int tries = 0; tries < 12; tries++, step *= 0.5)
@@ -216,13 +216,12 @@ namespace Fulcrum.SoftBodies
                 {
                     Array.Copy(_trial, x, _n);
                     if (_bodyCount > 0) PushCarriers((float)step, h, coupling);
-                    taken = step;
                     _taken = step;
                     break;
                 }
             }
-            if (taken > 0) KeepContactSpin(body, x, y);
-            KeepMomentum(body, x, y, (float)taken, h, coupling);
+            if (_taken > 0) KeepContactSpin(body, x, y);
+            KeepMomentum(body, x, y, (float)_taken, h, coupling);
             PushBodies(body, x, h, coupling);
             ReportSupport(body, x, y, h);
             ReportSticks(body, x, y, h);
