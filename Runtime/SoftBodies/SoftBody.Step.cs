@@ -248,7 +248,12 @@ namespace Fulcrum.SoftBodies
         /// The rest of a substep with <see cref="SoftSolver.Newton"/>: the predicted positions are the
         /// inertial targets; per iteration one Newton step of implicit Euler, then contacts and
         /// attachments projected; friction; velocities from the positions. Damping is part of
-        /// the Newton step (no separate velocity pass).
+        /// the Newton step (no separate velocity pass). Friction against shapes comes after the
+        /// last iteration's step only, bounded by the normal impulse that step measured: each
+        /// step starts from the positions the last one left and pulls the body back to its
+        /// inertial target, undoing an earlier pass's friction while the cone it spent stayed
+        /// spent (with friction after each of two iterations, and the larger of their supports, a
+        /// Newton cube held on every slope it should have slid down).
         /// </summary>
         void SubstepNewton(float h, RigidCoupling coupling)
         {
@@ -256,11 +261,16 @@ namespace Fulcrum.SoftBodies
             Array.Copy(X, _target, X.Length);
             for (int iteration = 0; iteration < Iterations; iteration++)
             {
+                if (iteration > 0 && CollideWithShapes) Contacts.ReplaceSupport();
                 NewtonSolver!.Step(this, _target, h, coupling);
                 // A vertex the step took into a shape is held by the next step's overlap spring
                 // rather than pushed out alone by the contact pass (ImplicitNewtonSolver.Entered).
-                if (NewtonSolver.Entered(this, ImplicitNewtonSolver.EnterTolerance)) NewtonSolver.Step(this, _target, h, coupling);
-                if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
+                if (NewtonSolver.Entered(this, ImplicitNewtonSolver.EnterTolerance))
+                {
+                    if (iteration > 0 && CollideWithShapes) Contacts.ReplaceSupport();
+                    NewtonSolver.Step(this, _target, h, coupling);
+                }
+                if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true, friction: iteration == Iterations - 1);
                 if (Attachments.Length > 0) AttachmentSolver.SolveEach(World, Attachments, X, W, h, coupling);
                 // After the contacts, as the XPBD pass's floor comes after them: what a heavy body
                 // pressed on the tets is taken back before the next Newton step sees it.
