@@ -560,9 +560,12 @@ namespace Fulcrum.SoftBodies
                 // slow). Only for a free body, whose weight the patch alone carries: with the limit
                 // for pinned and attached bodies too, three soft fuzz worlds of such bodies
                 // (seeds 53, 77, 229) failed newly; that case is open (CHANGELOG, Known limits).
-                double taken = 0;
-                for (int p = 0; p < count; p++) if (Member(p, still)) taken += SpillTake(p, mu, share, holds);
-                limit = Unpinned(body) && taken > Math.Max(0, cone) ? (float)(Math.Max(0, cone) / taken) : 1f;
+                if (Unpinned(body))
+                {
+                    double taken = 0;
+                    for (int p = 0; p < count; p++) if (Member(p, still)) taken += SpillTake(p, mu, share, holds);
+                    if (taken > Math.Max(0, cone)) limit = (float)(Math.Max(0, cone) / taken);
+                }
             }
             for (int p = 0; p < count; p++)
             {
