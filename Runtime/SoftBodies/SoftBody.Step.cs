@@ -30,6 +30,8 @@ namespace Fulcrum.SoftBodies
         internal void BeginStep(float dt, RigidCoupling coupling)
         {
             Array.Copy(X, XStart, X.Length);
+            Array.Copy(V, VStart, V.Length);
+            Contacts.KeepStepStart();
             SubstepsBegun = 0;
             if (CollideWithShapes) Contacts.Gather(World, this, dt, coupling);
             AttachmentSolver.Track(World, Attachments, coupling);
@@ -151,14 +153,20 @@ namespace Fulcrum.SoftBodies
         /// <summary>Whether the last <see cref="KeepFinite"/> found the body diverged (and put it back).</summary>
         internal bool DivergedInStep;
 
+        // What Blown measured at the end of the substeps: the largest |J|, whether a tet was
+        // inverted, and whether it holds for KeepFinite (nothing has moved a vertex or changed
+        // a rest shape since).
+        float _endLargestJ;
+        bool _endInverted, _endBlown, _endMeasured;
+
         /// <summary>
-        /// True when every vertex position and velocity is finite and inside the world bounds
-        /// and no tet has blown apart (its |J| beyond <see cref="MaxVolumeRatio"/> and more than
+        /// Whether the substeps left a vertex position or velocity non-finite or outside the world
+        /// bounds, or blew a tet apart (its |J| beyond <see cref="MaxVolumeRatio"/> and more than
         /// <see cref="BlowUpGrowth"/> times the step-start largest, or beyond <see cref="MaxStretch"/>;
-        /// tets holding a pinned vertex are left out, see <see cref="VolumeFloor.Measure"/>);
-        /// otherwise puts every vertex back at its step-start position at rest and returns false.
+        /// tets holding a pinned vertex are left out, see <see cref="VolumeFloor.Measure"/>).
+        /// Changes no vertex; <see cref="KeepFinite"/> acts on what it found.
         /// </summary>
-        internal bool KeepFinite()
+        internal bool Blown()
         {
             float bound = Limits.MaxPosition;
             bool bad = false;
@@ -171,16 +179,46 @@ namespace Fulcrum.SoftBodies
             // Blown apart: a tet whose volume ratio went beyond MaxVolumeRatio, growing more than
             // BlowUpGrowth times in one step (finite, but no material stores that: the first step
             // of an explosion, which otherwise ran on to 1e25 J of strain within the world bounds).
+            _endInverted = false;
+            _endLargestJ = 0f;
             if (!bad && Tets.Length > 0)
             {
-                float largest = VolumeFloor.Measure(TetData, X, mark: false, out bool inverted);
-                bad = !(largest <= MaxVolumeRatio || largest <= BlowUpGrowth * _startLargestJ)
-                    || _startLargestJ <= MaxStretch && !(largest <= MaxStretch);
-                if (!bad)
-                {
-                    _startLargestJ = largest;
-                    _cleanEnd = !inverted;
-                }
+                _endLargestJ = VolumeFloor.Measure(TetData, X, mark: false, out _endInverted);
+                bad = !(_endLargestJ <= MaxVolumeRatio || _endLargestJ <= BlowUpGrowth * _startLargestJ)
+                    || _startLargestJ <= MaxStretch && !(_endLargestJ <= MaxStretch);
+            }
+            _endBlown = bad;
+            _endMeasured = true;
+            return bad;
+        }
+
+        /// <summary>
+        /// Puts the body back as the step found it, to take the step again: positions and
+        /// velocities, its unscaled inertia, and what its contacts remembered from the last step.
+        /// </summary>
+        internal void RollBack()
+        {
+            Array.Copy(XStart, X, X.Length);
+            Array.Copy(XStart, XPrev, X.Length);
+            Array.Copy(VStart, V, V.Length);
+            RestoreInertia();
+            Contacts.BackToStepStart();
+            _endMeasured = false;
+        }
+
+        /// <summary>
+        /// True when <see cref="Blown"/> (measured again here if the rest shapes changed since, by
+        /// plastic flow) found the body whole; otherwise puts every vertex back at its step-start
+        /// position at rest and returns false.
+        /// </summary>
+        internal bool KeepFinite()
+        {
+            bool bad = _endMeasured && !(Plasticity.Enabled && Tets.Length > 0) ? _endBlown : Blown();
+            _endMeasured = false;
+            if (!bad && Tets.Length > 0)
+            {
+                _startLargestJ = _endLargestJ;
+                _cleanEnd = !_endInverted;
             }
             DivergedInStep = bad;
             if (!bad) return true;
@@ -411,18 +449,22 @@ namespace Fulcrum.SoftBodies
         /// <summary>Once per world step, after the substeps.</summary>
         internal void EndStep(float dt)
         {
-            if (_inertiaScale != 1f)
-            {
-                Array.Copy(_baseW!, W, W.Length);
-                Array.Copy(_baseFreeW!, FreeW, FreeW.Length);
-                Array.Copy(_baseM!, M, M.Length);
-                _inertiaScale = 1f;
-            }
+            RestoreInertia();
             if (Plasticity.Enabled && Tets.Length > 0)
             {
                 PlasticFlow.Apply(this, dt);
                 TetData.LoadElements(Tets);
             }
+        }
+
+        // The unscaled masses back after a step that scaled them (ScaleInertia).
+        void RestoreInertia()
+        {
+            if (_inertiaScale == 1f) return;
+            Array.Copy(_baseW!, W, W.Length);
+            Array.Copy(_baseFreeW!, FreeW, FreeW.Length);
+            Array.Copy(_baseM!, M, M.Length);
+            _inertiaScale = 1f;
         }
 
         // The tet job, specialised for the body's material model (which does not change).

@@ -23,6 +23,8 @@ namespace Fulcrum.SoftBodies
         internal readonly Vector3[] XPrev;
         // Positions at the start of the step: where a diverged body is put back (SoftBodySystem).
         internal readonly Vector3[] XStart;
+        // Velocities at the start of the step: with XStart, what a step taken again starts from (SoftBodySystem).
+        internal readonly Vector3[] VStart;
         internal readonly Vector3[] V;
         internal readonly float[] W;
         internal readonly float[] M;
@@ -87,6 +89,7 @@ namespace Fulcrum.SoftBodies
             X = new Vector3[n];
             XPrev = new Vector3[n];
             XStart = new Vector3[n];
+            VStart = new Vector3[n];
             V = new Vector3[n];
             W = new float[n];
             M = new float[n];

@@ -16,7 +16,7 @@ namespace Fulcrum.SoftBodies
         Type[] IStateStage.LayoutTypes => StateTypes;
 
         // The slots (live or not, with generations), the order bodies step in, each live body's
-        // state, and the divergence record.
+        // state, the divergence record and the count of steps taken again.
         void IStateStage.SaveState(StateWriter w)
         {
             w.Write(_slots.SlotCount);
@@ -32,6 +32,9 @@ namespace Fulcrum.SoftBodies
             w.Write(LastDiverged.Index);
             w.Write(LastDiverged.Generation);
             w.Write(LastDivergedStep);
+            w.Write(RetriedSteps);
+            w.Write(_divergedLastStep);
+            w.Write(_retrySubstepFactor);
         }
 
         Action IStateStage.PrepareRestore(StateReader r)
@@ -63,6 +66,10 @@ namespace Fulcrum.SoftBodies
             int divergences = r.Read<int>("soft divergence count");
             var last = new SoftBodyHandle(r.Read<int>("soft divergence slot"), r.Read<int>("soft divergence generation"), _world.Id);
             long lastStep = r.Read<long>("soft divergence step");
+            int retried = r.Read<int>("soft retried step count");
+            bool divergedLast = r.Read<bool>("soft divergence in the last step");
+            int retryFactor = r.Read<int>("soft retry substep factor");
+            if (retryFactor < 1 || retryFactor > 64) throw r.Error($"soft retry substep factor {retryFactor} is not 1 to 64.");
             return () =>
             {
                 _slots.SetActiveOrder(orderSlots);
@@ -70,6 +77,9 @@ namespace Fulcrum.SoftBodies
                 DivergenceCount = divergences;
                 LastDiverged = last;
                 LastDivergedStep = lastStep;
+                RetriedSteps = retried;
+                _divergedLastStep = divergedLast;
+                _retrySubstepFactor = retryFactor;
             };
         }
     }

@@ -20,7 +20,7 @@ static class FuzzCommand
         int seed = a.Int("--seed", 0) ?? 0;
         int steps = a.Int("--steps", 1) ?? 180;
         bool soft = a.Has("--soft"), verbose = a.Has("--verbose");
-        int diverged = 0, escaped = 0, gained = 0, refused = 0, inverted = 0;
+        int diverged = 0, escaped = 0, gained = 0, refused = 0, inverted = 0, retried = 0;
         for (int s = seed; s < seed + count; s++)
         {
             string? failure, escape, gain, inversion = null;
@@ -33,6 +33,8 @@ static class FuzzCommand
                     if (verbose) output.WriteLine("refused: " + o.Refusal);
                 }
                 (failure, escape, gain, inversion) = (o.Failure, o.Escape, o.EnergyGain, o.Inverted);
+                retried += o.Retried;
+                if (verbose && o.Retried > 0) output.WriteLine($"retried: seed {s}: {o.Retried} step(s) taken again with finer substeps");
             }
             else
             {
@@ -61,7 +63,7 @@ static class FuzzCommand
                 output.WriteLine("inverted: " + inversion);
             }
         }
-        output.WriteLine($"fuzz: {count} {(soft ? "soft " : "")}worlds from seed {seed}, {steps} steps each: {refused} refused, {diverged} diverged, {escaped} escaped, {gained} gained energy" + (soft ? $", {inverted} inverted" : ""));
+        output.WriteLine($"fuzz: {count} {(soft ? "soft " : "")}worlds from seed {seed}, {steps} steps each: {refused} refused, {diverged} diverged, {escaped} escaped, {gained} gained energy" + (soft ? $", {inverted} inverted ({retried} steps taken again with finer substeps)" : ""));
         return diverged + escaped + gained + inverted > 0 ? Cli.ExitDiverged : Cli.ExitOk;
     }
 }

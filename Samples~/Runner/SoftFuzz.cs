@@ -39,6 +39,8 @@ namespace Fulcrum.Runner
             /// moving at the contact push and joint correction speeds together.
             /// </summary>
             public double EnergyAllowance;
+            /// <summary>Steps the soft-body system took again with finer substeps (<see cref="SoftBodySystem.RetriedSteps"/>).</summary>
+            public int Retried;
             /// <summary>The smallest element J at the end of the run (1 for shells).</summary>
             public float EndMinJ;
         }
@@ -69,6 +71,7 @@ namespace Fulcrum.Runner
             for (int n = 0; n < steps; n++)
             {
                 w.Step(1f / 60f);
+                outcome.Retried = system.RetriedSteps;
                 if (w.DivergenceCount > 0)
                 {
                     outcome.Failure = $"seed {seed}: {w.LastDivergence} ({what})";

@@ -52,6 +52,9 @@ namespace Fulcrum.Tests.State
             // whether the body is pressed from outside (the volume floor): set from the saved arrays at
             // the start of every step.
             "TetStream.Masses", "TetStream.ElementMasses", "TetStream.Loaded", "SoftBody._startLargestJ", "SoftBody._cleanEnd",
+            // The step-start velocities and what the blow-up check measured at the end of the
+            // substeps (for a step taken again): copied and measured anew in every step before use.
+            "SoftBody.VStart", "SoftBody._endLargestJ", "SoftBody._endInverted", "SoftBody._endBlown", "SoftBody._endMeasured",
             // Timing of past passes (pool or calling thread); the choice never changes results.
             "SoftBody._threadChoice",
         };

@@ -195,6 +195,52 @@ namespace Fulcrum.SoftBodies
             return heaviest;
         }
 
+        // What the last step left for this one (the arrays WriteState writes), kept at the step's
+        // start so that a step taken again (SoftBodySystem) starts from it.
+        bool[] _keptHold = Array.Empty<bool>(), _keptStuck = Array.Empty<bool>(), _keptRest = Array.Empty<bool>(), _keptFeatureMet = Array.Empty<bool>();
+        Vector3[] _keptNormal = Array.Empty<Vector3>(), _keptRestNormal = Array.Empty<Vector3>(), _keptRestVelocity = Array.Empty<Vector3>();
+
+        /// <summary>Keeps what the last step left for this one (see <see cref="BackToStepStart"/>).</summary>
+        internal void KeepStepStart()
+        {
+            Keep(_holdNow, ref _keptHold);
+            Keep(_stuckNow, ref _keptStuck);
+            Keep(_restNow, ref _keptRest);
+            Keep(_featureMetNow, ref _keptFeatureMet);
+            Keep(_normal, ref _keptNormal);
+            Keep(_restNormalNow, ref _keptRestNormal);
+            Keep(_restVelocityNow, ref _keptRestVelocity);
+        }
+
+        /// <summary>
+        /// Puts back what <see cref="KeepStepStart"/> kept, as a restored state does (the last
+        /// substep's flags cleared): the step is taken again from its start.
+        /// </summary>
+        internal void BackToStepStart()
+        {
+            Back(_keptHold, _holdNow, _holdLast);
+            Back(_keptStuck, _stuckNow, _stuckLast);
+            Back(_keptRest, _restNow, _restLast);
+            Back(_keptFeatureMet, _featureMetNow, _featureMetLast);
+            Back(_keptNormal, _normal, null);
+            Back(_keptRestNormal, _restNormalNow, _restNormalLast);
+            Back(_keptRestVelocity, _restVelocityNow, _restVelocityLast);
+        }
+
+        static void Keep<T>(T[] now, ref T[] kept)
+        {
+            if (kept.Length != now.Length) kept = new T[now.Length];
+            Array.Copy(now, kept, now.Length);
+        }
+
+        // A step that grew the arrays found them empty: they go back to all clear.
+        static void Back<T>(T[] kept, T[] now, T[]? last)
+        {
+            if (kept.Length == now.Length) Array.Copy(kept, now, now.Length);
+            else Array.Clear(now, 0, now.Length);
+            if (last != null) Array.Clear(last, 0, last.Length);
+        }
+
         /// <summary>Writes what the next step reads: which vertices an immovable shape held in the last substep, and the normals, which static friction held, which vertices' surface triangles a shape's feature met, and which vertices rest on a shape (with its normal and surface velocity there).</summary>
         internal void WriteState(StateWriter w)
         {

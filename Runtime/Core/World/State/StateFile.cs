@@ -14,7 +14,7 @@ namespace Fulcrum
         const ulong Magic = 0x534D5552434C5546UL;
 
         /// <summary>The format version. Raise it when a section's order or meaning changes (layout changes are caught by the fingerprint).</summary>
-        public const int Version = 7; // 2: the IGNR section (shape pairs that ignore each other); 3: body axis locks; 4: soft attachments no longer keep a velocity scratch; 5: soft contacts' static-friction flags; 6: the vertices whose surface triangles a rigid shape's feature met; 7: the soft vertices resting on a shape (their normal and its surface velocity)
+        public const int Version = 8; // 2: the IGNR section (shape pairs that ignore each other); 3: body axis locks; 4: soft attachments no longer keep a velocity scratch; 5: soft contacts' static-friction flags; 6: the vertices whose surface triangles a rigid shape's feature met; 7: the soft vertices resting on a shape (their normal and its surface velocity); 8: the soft steps taken again with finer substeps
 
         const int HeaderSize = 8 + 4 + 4 + 8 + 8 + 8 + 8;
 
