@@ -34,7 +34,8 @@ namespace Fulcrum.SoftBodies
             Contacts.KeepStepStart();
             SubstepsBegun = 0;
             if (CollideWithShapes) Contacts.Gather(World, this, dt, coupling);
-            AttachmentSolver.Track(World, Attachments, coupling);
+            AttachmentSolver.Track(World, this, coupling);
+            NewtonSolver?.ForgetCondensed();
             SelfContacts?.FindPairs(X, V, dt);
             float heaviest = CollideWithShapes ? Contacts.HeaviestBody(World, X, Down()) : 0f;
             // An attached body hangs its weight on this body only when a pin holds this body to

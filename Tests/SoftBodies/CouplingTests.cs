@@ -226,6 +226,54 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(speed, Is.LessThan(0.3f), "the pair comes to rest");
         }
 
+        // Two Newton bodies pinned to one light body (a 20 g or 2 kg hub): a sphere below, a box
+        // beside and above it, dropped together (soft fuzz seed 82 in a scene of its own). Each
+        // body's Newton step moves the hub as part of its own system, one body after the other;
+        // seeing only the hub's own inertia, each dragged it to its own liking in turn. Once the
+        // sphere landed, its step slowed the hub and the box's step took it back to the box's free
+        // fall: the box never felt the ground through the sphere, the sphere's pinned side was
+        // driven into it every substep, and at E 1e5 Pa the pair gained 791 J (20 g hub) and
+        // 1180 J (2 kg) from a 93-139 J drop. Now each step counts the other body's condensed
+        // response to the hub's move and hands that body the move it stands for
+        // (ImplicitNewtonSolver.SharedBodies): no gain at 1e5 Pa. At 5e6 Pa the stiff pair still
+        // gains 14.8 J and 8.6 J (24.5 J and 6.1 J before), 16 % and 6 % of the start: held here
+        // under a fifth of it (the figure reached, still open).
+        [Test]
+        public void Two_newton_bodies_pinned_to_one_light_body_land_without_gaining_energy(
+            [Values(0.02f, 2f)] float hubMass, [Values(1e5f, 5e6f)] float youngs)
+        {
+            World world = SoftBodyScenes.WorldWithGround();
+            BodyDef hubDef = BodyDef.Dynamic(new Vector3(-0.1f, 2.4f, 0f));
+            hubDef.Mass = hubMass;
+            BodyHandle hub = world.CreateBody(hubDef);
+            world.AddShape(hub, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.05f))));
+            SoftBody Pinned(SoftMesh mesh, float poisson, float density, Vector3 at)
+            {
+                var def = SoftBodyDef.Of(mesh, new NeoHookeanMaterial(MaterialModel.StableNeoHookean, youngs, poisson, density), at);
+                def.Solver = SoftSolver.Newton;
+                Aabb bounds = mesh.Bounds;
+                def.Pins = new[] { SoftPin.ToBody(bounds.Min, new Vector3(bounds.Min.X + 0.1f * (bounds.Max.X - bounds.Min.X), bounds.Max.Y, bounds.Max.Z), hub) };
+                return world.GetSoftBody(world.CreateSoftBody(def));
+            }
+            SoftBody sphere = Pinned(SoftMesh.Sphere(0.2f, 4), 0.48f, 250f, new Vector3(0f, 0.5f, 0f));
+            SoftBody box = Pinned(SoftMesh.Box(new Vector3(0.5f, 0.2f, 0.4f), 4, 2, 3), 0.49f, 100f, new Vector3(0.1f, 1.3f, 0.1f));
+            double start = Mechanical(world, hub, sphere, box), most = start;
+            float lowestJ = 1f, landing = 0f;
+            for (int i = 0; i < 180; i++)
+            {
+                world.Step(SoftBodyScenes.Dt);
+                most = Math.Max(most, Mechanical(world, hub, sphere, box));
+                lowestJ = MathF.Min(lowestJ, MathF.Min(sphere.ComputeStats().MinJ, box.ComputeStats().MinJ));
+                if (i < 60) landing = MathF.Max(landing, world.GetBody(hub).LinearVelocity.Length());
+            }
+            TestContext.Out.WriteLine($"{hubMass} kg hub, E {youngs:G2}: mechanical energy rose at most {most - start:G3} J (start {start:F1} J); lowest J {lowestJ:F3}; hub at most {landing:F2} m/s in the first second");
+            Assert.That(SoftBodySystem.Of(world)!.DivergenceCount, Is.EqualTo(0));
+            Assert.That(world.DivergenceCount, Is.EqualTo(0));
+            if (youngs < 1e6f) Assert.That(most - start, Is.LessThan(1.0), "no energy from the landing (J)");
+            else Assert.That(most - start, Is.LessThan(0.2 * start), "at most a fifth of the start gained (J; what is reached, not a goal)");
+            Assert.That(lowestJ, Is.GreaterThan(0.5f));
+        }
+
         // A cloth (1.2 x 1 m, 8 x 8 cells) pinned along one edge to a small box 1.5 m from the edge,
         // both at rest in zero gravity, the cloth turned out of the axes (float rounding is then the
         // only disturbance). The attachments were projected one at a time, each with the body's
@@ -310,12 +358,13 @@ namespace Fulcrum.Tests.SoftBodies
             world.GetBody(body).Mass * world.GetBody(body).LinearVelocity + soft.ComputeStats().Momentum;
 
         // The kinetic energy of a rigid body and a soft body, J.
-        static double Kinetic(World world, BodyHandle body, SoftBody soft)
+        static double Kinetic(World world, BodyHandle body, params SoftBody[] softBodies)
         {
             BodyRef b = world.GetBody(body);
             Vector3 local = Vector3.Transform(b.AngularVelocity, Quaternion.Conjugate(b.Rotation));
             double e = 0.5 * b.Mass * b.LinearVelocity.LengthSquared() + 0.5 * Vector3.Dot(local, b.InertiaLocal * local);
-            for (int i = 0; i < soft.VertexCount; i++) e += 0.5 * soft.Masses[i] * soft.Velocities[i].LengthSquared();
+            foreach (SoftBody soft in softBodies)
+                for (int i = 0; i < soft.VertexCount; i++) e += 0.5 * soft.Masses[i] * soft.Velocities[i].LengthSquared();
             return e;
         }
 
@@ -356,12 +405,13 @@ namespace Fulcrum.Tests.SoftBodies
         }
 
         // Kinetic plus gravitational energy of a rigid body and a soft body, J.
-        static double Mechanical(World world, BodyHandle body, SoftBody soft)
+        static double Mechanical(World world, BodyHandle body, params SoftBody[] softBodies)
         {
-            double e = Kinetic(world, body, soft);
+            double e = Kinetic(world, body, softBodies);
             Vector3 g = world.Settings.Gravity;
             e -= world.GetBody(body).Mass * Vector3.Dot(g, world.GetBody(body).CenterOfMass);
-            for (int i = 0; i < soft.VertexCount; i++) e -= soft.Masses[i] * Vector3.Dot(g, soft.Positions[i]);
+            foreach (SoftBody soft in softBodies)
+                for (int i = 0; i < soft.VertexCount; i++) e -= soft.Masses[i] * Vector3.Dot(g, soft.Positions[i]);
             return e;
         }
 

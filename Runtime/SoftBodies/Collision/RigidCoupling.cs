@@ -49,6 +49,13 @@ namespace Fulcrum.SoftBodies
         // Dynamic bodies: the velocity the rigid solve left them with (Restore).
         Vector3[] _endLinear = Array.Empty<Vector3>();
         Vector3[] _endAngular = Array.Empty<Vector3>();
+        // Per tracked entry: how many soft bodies hold vertices attached to it this step, and
+        // the last one counted (Carry).
+        int[] _carriedBy = Array.Empty<int>();
+        SoftBody?[] _lastCarrier = Array.Empty<SoftBody?>();
+        // The soft bodies with vertices attached to a tracked dynamic body this step.
+        SoftBody[] _carriers = Array.Empty<SoftBody>();
+        int _carrierCount;
         int _count;
         float _dt;
         World _world = null!;
@@ -68,6 +75,8 @@ namespace Fulcrum.SoftBodies
             }
             for (int k = 0; k < _count; k++) _entryOfSlot[_slot[k]] = -1;
             _count = 0;
+            Array.Clear(_carriers, 0, _carrierCount);
+            _carrierCount = 0;
         }
 
         /// <summary>Starts walking a moving body through the substeps (static bodies need nothing).</summary>
@@ -78,6 +87,8 @@ namespace Fulcrum.SoftBodies
             int e = _count++;
             _entryOfSlot[slot] = e;
             _slot[e] = slot;
+            _carriedBy[e] = 0;
+            _lastCarrier[e] = null;
             BodyStorage b = _bodies;
             _startRotation[e] = b.PreviousRotation[slot];
             _startCenter[e] = b.PreviousPosition[slot] + Vector3.Transform(b.LocalCenter[slot], b.PreviousRotation[slot]);
@@ -116,6 +127,35 @@ namespace Fulcrum.SoftBodies
             b.SyncOriginFromCenter(slot);
             b.UpdateWorldInertia(slot);
         }
+
+        /// <summary>
+        /// Notes that <paramref name="body"/> holds vertices attached to the tracked dynamic body
+        /// in <paramref name="slot"/> this step (after <see cref="Track"/>; see <see cref="Shared"/>).
+        /// </summary>
+        public void Carry(int slot, SoftBody body)
+        {
+            int e = _entryOfSlot[slot];
+            if (e < 0 || _lastCarrier[e] == body) return;
+            _lastCarrier[e] = body;
+            _carriedBy[e]++;
+            for (int c = 0; c < _carrierCount; c++)
+                if (_carriers[c] == body) return;
+            if (_carrierCount == _carriers.Length) Array.Resize(ref _carriers, Math.Max(4, 2 * _carrierCount));
+            _carriers[_carrierCount++] = body;
+        }
+
+        /// <summary>Whether more than one soft body holds vertices attached to the body in <paramref name="slot"/> this step.</summary>
+        public bool Shared(int slot)
+        {
+            int e = _entryOfSlot[slot];
+            return e >= 0 && _carriedBy[e] > 1;
+        }
+
+        /// <summary>The soft bodies with vertices attached to a tracked dynamic body this step (<see cref="Carrier"/> 0 .. this - 1).</summary>
+        public int CarrierCount => _carrierCount;
+
+        /// <summary>Soft body <paramref name="c"/> of those with vertices attached to a tracked dynamic body this step.</summary>
+        public SoftBody Carrier(int c) => _carriers[c];
 
         /// <summary>
         /// Puts every tracked dynamic body back where the rigid solve left it, pose and velocity:
@@ -387,6 +427,8 @@ namespace Fulcrum.SoftBodies
             Array.Resize(ref _angularCorrection, capacity);
             Array.Resize(ref _endLinear, capacity);
             Array.Resize(ref _endAngular, capacity);
+            Array.Resize(ref _carriedBy, capacity);
+            Array.Resize(ref _lastCarrier, capacity);
         }
     }
 }

@@ -218,14 +218,20 @@ namespace Fulcrum.SoftBodies
             return heaviest;
         }
 
-        /// <summary>Tracks every live body that has vertices attached.</summary>
-        public static void Track(World world, Attachment[] attachments, RigidCoupling coupling)
+        /// <summary>
+        /// Tracks every live body that has vertices of <paramref name="body"/> attached, and notes
+        /// that the body carries them (<see cref="RigidCoupling.Carry"/>).
+        /// </summary>
+        public static void Track(World world, SoftBody body, RigidCoupling coupling)
         {
             BodyStorage b = world.Bodies;
+            Attachment[] attachments = body.Attachments;
             for (int k = 0; k < attachments.Length; k++)
             {
                 int slot = attachments[k].BodySlot;
-                if (b.Generation[slot] == attachments[k].BodyGeneration && b.ActiveIndex[slot] >= 0) coupling.Track(slot);
+                if (b.Generation[slot] != attachments[k].BodyGeneration || b.ActiveIndex[slot] < 0) continue;
+                coupling.Track(slot);
+                if (b.Type[slot] == BodyType.Dynamic) coupling.Carry(slot, body);
             }
         }
     }

@@ -61,7 +61,7 @@ namespace Fulcrum.SoftBodies
         /// Finds what holds each vertex in this step, puts the attached vertices at their anchors
         /// and picks where the step starts (<see cref="StartAtAnchors"/>).
         /// </summary>
-        void BeginAttachments(SoftBody body, Vector3[] x, Vector3[] y, double invH2)
+        void BeginAttachments(SoftBody body, Vector3[] x, Vector3[] y, double invH2, RigidCoupling coupling)
         {
             Attachment[] attachments = body.Attachments;
             if (_fixed.Length != _n)
@@ -116,6 +116,7 @@ namespace Fulcrum.SoftBodies
                 _carrier[i] = k;
             }
             EnsureBodyStorage();
+            GatherPartners(body, coupling);
             StartAtAnchors(body, x, y, invH2);
         }
 
@@ -290,6 +291,7 @@ namespace Fulcrum.SoftBodies
                     Array.Clear(_columns, (o + d) * _dofs, _dofs);
                 }
             }
+            AddPartners(size, invH2);
             Array.Copy(_schurRhs, _bodyRhs, size);
         }
 
@@ -298,7 +300,7 @@ namespace Fulcrum.SoftBodies
         /// from the Schur complement, and the free step u = u0 - Z q in _rhs. False when the
         /// Schur system is singular (no step).
         /// </summary>
-        bool SolveBodies()
+        bool SolveBodies(SoftBody body)
         {
             int size = 6 * _bodyCount;
             Array.Copy(_columns, _solved, size * _dofs);
@@ -315,6 +317,7 @@ namespace Fulcrum.SoftBodies
                     _schur[a * size + c] -= s;
                 }
             }
+            if (HasShared()) KeepCondensed(body, size);
             if (!ShiftedCholesky(size)) return false;
             for (int c = 0; c < size; c++)
             {
@@ -386,7 +389,7 @@ namespace Fulcrum.SoftBodies
                 Vector3 move = BodyMove(beta), turn = BodyTurn(beta);
                 e += _bodyMass[beta] * move.LengthSquared() + Vector3.Dot(turn, _bodyInertia[beta] * turn);
             }
-            return 0.5 * invH2 * step * step * e;
+            return 0.5 * invH2 * step * step * e + PartnerEnergy(step);
         }
 
         /// <summary>The largest move of a carried vertex at the full step, m.</summary>

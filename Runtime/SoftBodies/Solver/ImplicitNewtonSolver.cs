@@ -148,7 +148,7 @@ namespace Fulcrum.SoftBodies
             _helds = 0;
             _sticks = 0;
             Array.Clear(_overlapping, 0, _n);
-            BeginAttachments(body, x, y, invH2);
+            BeginAttachments(body, x, y, invH2, coupling);
             StartFromPrevious(body, x, y, invH2);
             Assemble(body, y, h, invH2, coupling, false);
             for (int k = 0; k < _dofs; k++) _gradient[k] = -_rhs[k];
@@ -167,7 +167,7 @@ namespace Fulcrum.SoftBodies
                 return;
             }
             Solve(_rhs, 0);
-            if (_bodyCount > 0 && !SolveBodies())
+            if (_bodyCount > 0 && !SolveBodies(body))
             {
                 PushBodies(body, x, h, coupling); // the bodies' system is singular: keep x
                 return;
@@ -216,6 +216,7 @@ namespace Fulcrum.SoftBodies
                 {
                     Array.Copy(_trial, x, _n);
                     if (_bodyCount > 0) PushCarriers((float)step, h, coupling);
+                    if (_partnerCount > 0) MovePartners((float)step, h);
                     _taken = step;
                     break;
                 }
