@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using Fulcrum.Dynamics;
-using Fulcrum.Mathematics;
 
 namespace Fulcrum.SoftBodies
 {
