@@ -273,7 +273,7 @@ namespace Fulcrum.SoftBodies
                 // locked in (a cube at E = 1e9 Pa kept 1.2e4 J; this order leaves 185 J).
                 if (CollideWithShapes) Contacts.Solve(World, this, h, coupling, normal: true);
                 RunElements(h, damping: false, pool);
-                if (Attachments.Length > 0) AttachmentSolver.Solve(World, Attachments, X, W, h, coupling);
+                if (Attachments.Length > 0) AttachmentSolver.Solve(World, this, X, W, h, coupling);
             }
             EndPositions(h, coupling);
             if (DampingTime > 0f)

@@ -23,23 +23,25 @@ namespace Fulcrum.SoftBodies
     /// it; a body falling freely hands them its inertia (as a rigid whole where it is stiff, less
     /// where it is soft). After the step that body takes the move its P stands for: its vertices
     /// carried by the rigid body move with it (J q), its free vertices as its last Schur solve
-    /// says they follow (-Z q), and each gains that move over h as velocity, so the momentum the
-    /// step handed it is not lost. The free vertices' move is held to the body's trust region (a
-    /// quarter of its shortest edge, as its own Newton step is): under a hard landing its factor
-    /// is shifted near a singular direction, and a 1 cm move of the hub threw a sphere's free
-    /// vertex 16 cm.
+    /// says they follow (-Z q), held to its trust region (a quarter of its shortest edge, as its
+    /// own step is; a safeguard for a factor shifted near a singular direction), and each gains
+    /// the move over h as velocity, so the momentum the step handed it is not lost. A body that
+    /// has not begun this substep takes the move as velocity alone, which its own prediction then
+    /// carries out: moved as well, it went twice as far (a stiff pair gained 15 J, and up to 4 kJ
+    /// in a hard landing).
     /// </para>
     /// <para>
     /// The first body to step in a world step finds no P kept yet; nothing is carried from one
     /// world step to the next, so the world state is unchanged. Bodies solved by XPBD neither
-    /// give nor take a response. A rigid body with axis locks is left out (its Schur rows are
-    /// held). Measured on a 20 g and a 2 kg hub holding a Newton sphere and box dropped
-    /// together (CouplingTests), the mechanical energy rose at most 791 J and 1180 J at
-    /// E = 1e5 Pa and 24.5 J and 6.1 J at 5e6 Pa before, and 0, 0, 14.8 J and 8.6 J with this.
-    /// Tried and dropped: the matrix alone with no follow (the momentum handed to the other
-    /// body was lost: seed 82 still gained 259 J); the other bodies as rigid wholes with their
-    /// momentum (stiff cases better, soft ones gained up to 78 J and two fuzz worlds newly
-    /// failed); and that merge of momenta before this scheme (2.3 kJ at 1e5 Pa).
+    /// give nor take a response (their attachment projections move the other bodies' attached
+    /// vertices with the rigid body: AttachmentSolver). A rigid body with axis locks is left out
+    /// (its Schur rows are held). Measured on a 20 g and a 2 kg hub holding a Newton sphere and
+    /// box dropped together (CouplingTests), the mechanical energy rose at most 791 J and 1180 J
+    /// at E = 1e5 Pa and 24.5 J and 6.1 J at 5e6 Pa before, and not at all with this. Tried and
+    /// dropped: the matrix alone with no move handed over (the momentum handed to the other body
+    /// was lost: seed 82 still gained 259 J); the other bodies as rigid wholes with their momentum
+    /// (stiff cases better, soft ones gained up to 78 J and two fuzz worlds newly failed); and a
+    /// merge of the bodies' momenta before this scheme (2.3 kJ at 1e5 Pa).
     /// </para>
     /// </summary>
     internal sealed partial class ImplicitNewtonSolver
@@ -194,33 +196,37 @@ namespace Fulcrum.SoftBodies
         /// other Newton body whose response the step counted takes the move that response stands
         /// for (see the class).
         /// </summary>
-        void MovePartners(float step, float h)
+        void MovePartners(SoftBody self, float step, float h)
         {
             for (int p = 0; p < _partnerCount; p++)
             {
                 int beta = _partnerBeta[p];
                 Vector3 move = step * BodyMove(beta), turn = step * BodyTurn(beta);
-                _partnerBody[p].NewtonSolver!.Follow(_partnerBody[p], _partnerAt[p], move, turn, _bodyCenter[beta], h);
+                SoftBody other = _partnerBody[p];
+                other.NewtonSolver!.Follow(other, _partnerAt[p], move, turn, _bodyCenter[beta], h, other.SubstepsBegun < self.SubstepsBegun);
             }
         }
 
         // This body follows a move (dc, dtheta) about centre c of its shared body at index at of
         // its last step: rigidly where the Schur response would move a free vertex more than
         // twice as far as the rigid motion.
-        void Follow(SoftBody body, int at, Vector3 move, Vector3 turn, Vector3 center, float h)
+        // A body that has not begun this substep yet (ahead) takes the move as velocity alone,
+        // which its own prediction then carries out (moved as well, it went twice as far).
+        void Follow(SoftBody body, int at, Vector3 move, Vector3 turn, Vector3 center, float h, bool ahead)
         {
             Vector3[] x = body.X, v = body.V;
             float largest = 0;
             for (int i = 0; i < _n; i++)
                 if (_carrier[i] < 0 && !_fixed[i]) largest = MathF.Max(largest, Response(i, at, move, turn).Length());
             float scale = largest > _reach ? _reach / largest : 1f;
-            float invH = 1f / h;
+            float keep = ahead && body.LinearDamping > 0 ? 1f / (1f + body.LinearDamping * h) : 1f;
+            float invH = 1f / (h * keep);
             for (int i = 0; i < _n; i++)
             {
                 int k = _carrier[i];
                 if (k >= 0 ? _bodyOf[k] != at : _fixed[i]) continue;
                 Vector3 d = k >= 0 ? move + Vector3.Cross(turn, x[i] - center) : scale * Response(i, at, move, turn);
-                x[i] += d;
+                if (!ahead) x[i] += d;
                 v[i] += d * invH;
             }
         }

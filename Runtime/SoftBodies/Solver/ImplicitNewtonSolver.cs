@@ -216,7 +216,7 @@ namespace Fulcrum.SoftBodies
                 {
                     Array.Copy(_trial, x, _n);
                     if (_bodyCount > 0) PushCarriers((float)step, h, coupling);
-                    if (_partnerCount > 0) MovePartners((float)step, h);
+                    if (_partnerCount > 0) MovePartners(body, (float)step, h);
                     _taken = step;
                     break;
                 }
