@@ -70,8 +70,16 @@ namespace Fulcrum.Tests.Viewer
             int port = 20000 + Random.Shared.Next(20000);
             using var stop = new CancellationTokenSource();
             var output = new StringWriter();
+            TextWriter shared = TextWriter.Synchronized(output);
+            string Text() { lock (shared) return output.ToString(); }
             Task<int> server = Task.Run(() => ViewCommand.Run(
-                new Arguments("view", new[] { "view", rec, "--port", port.ToString(), "--viewer", viewer }, 1, ViewCommand.Flags), output, stop.Token));
+                new Arguments("view", new[] { "view", rec, "--port", port.ToString(), "--viewer", viewer }, 1, ViewCommand.Flags), shared, stop.Token));
+            // No request before the server says it serves: .NET's managed HttpListener starts its
+            // first accept before it has made the table that accept files the connection in, and
+            // a connection that lands in between crashes the whole test host (a null lock on a
+            // pool thread; CI once lost 24 tests to it, from this test's retry loop).
+            var deadline = DateTime.UtcNow.AddSeconds(30);
+            while (!Text().Contains("serving http") && DateTime.UtcNow < deadline && !server.IsCompleted) await Task.Delay(20);
             using var http = new HttpClient { BaseAddress = new Uri($"http://127.0.0.1:{port}/") };
             string index = "";
             for (int attempt = 0; attempt < 50 && index.Length == 0; attempt++)
@@ -88,7 +96,7 @@ namespace Fulcrum.Tests.Viewer
                 Assert.That(served, Is.EqualTo(File.ReadAllBytes(rec)));
                 Assert.That((int)(await http.GetAsync("/../secret.txt")).StatusCode, Is.EqualTo(404));
                 Assert.That((int)(await http.GetAsync("/%2e%2e/secret.txt")).StatusCode, Is.EqualTo(404));
-                Assert.That(output.ToString(), Does.Contain($"serving http://127.0.0.1:{port}/?file=recording.frec&name=tower.frec"));
+                Assert.That(Text(), Does.Contain($"serving http://127.0.0.1:{port}/?file=recording.frec&name=tower.frec"));
             }
             finally
             {
