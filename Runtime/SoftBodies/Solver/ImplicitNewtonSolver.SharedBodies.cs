@@ -208,10 +208,10 @@ namespace Fulcrum.SoftBodies
         }
 
         // This body follows a move (dc, dtheta) about centre c of its shared body at index at of
-        // its last step: rigidly where the Schur response would move a free vertex more than
-        // twice as far as the rigid motion.
-        // A body that has not begun this substep yet (ahead) takes the move as velocity alone,
-        // which its own prediction then carries out (moved as well, it went twice as far).
+        // its last step: carried vertices with the body, free ones by -Z q scaled so that none
+        // moves further than the trust region. A body that has not begun this substep yet
+        // (ahead) takes the move as velocity alone, which its own prediction then carries out
+        // (moved as well, it went twice as far).
         void Follow(SoftBody body, int at, Vector3 move, Vector3 turn, Vector3 center, float h, bool ahead)
         {
             Vector3[] x = body.X, v = body.V;
