@@ -25,6 +25,10 @@ namespace Fulcrum.SoftBodies
         internal readonly Vector3[] XStart;
         // Velocities at the start of the step: with XStart, what a step taken again starts from (SoftBodySystem).
         internal readonly Vector3[] VStart;
+        // The positions the substep's prediction gave (velocities come from the constraints' moves
+        // away from them), and what that prediction's moves lost to rounding; see Substep.
+        internal readonly Vector3[] XPredicted;
+        internal readonly Vector3[] XResidual;
         internal readonly Vector3[] V;
         internal readonly float[] W;
         internal readonly float[] M;
@@ -90,6 +94,8 @@ namespace Fulcrum.SoftBodies
             XPrev = new Vector3[n];
             XStart = new Vector3[n];
             VStart = new Vector3[n];
+            XPredicted = new Vector3[n];
+            XResidual = new Vector3[n];
             V = new Vector3[n];
             W = new float[n];
             M = new float[n];

@@ -544,5 +544,44 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(lowest, Is.GreaterThan(0.1f), "stays on the table");
             Assert.That(highest, Is.EqualTo(0.56f).Within(0.01f), "hangs over the rod (top at 0.55 + radius)");
         }
+
+        // A kinematic body moves along the path its velocities prescribe whatever it touches:
+        // the soft stage takes it along that path substep by substep, and the last substep
+        // used to end a rounding away from where the rigid solve had put it (the interpolation
+        // at t = 1), so a turning paddle pressed into a jelly drifted off the path of the same
+        // paddle alone (and a step taken again with finer substeps started from the drifted
+        // pose). Now both end every step on the same bits.
+        [TestCase(SoftSolver.Xpbd)]
+        [TestCase(SoftSolver.Newton)]
+        public void A_kinematic_body_pressing_a_soft_body_keeps_exactly_to_its_path(SoftSolver solver)
+        {
+            World With(bool jelly, out BodyHandle paddle)
+            {
+                World world = SoftBodyScenes.WorldWithGround();
+                BodyDef d = BodyDef.Kinematic(new Vector3(0.05f, 0.33f, 0.02f));
+                d.LinearVelocity = new Vector3(0.013f, -0.07f, 0.011f);
+                d.AngularVelocity = new Vector3(0.2f, 1.3f, -0.4f);
+                paddle = world.CreateBody(d);
+                world.AddShape(paddle, ShapeDef.Of(ShapeGeometry.Box(new Vector3(0.3f, 0.05f, 0.1f))));
+                if (jelly)
+                {
+                    var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(0.5f, 0.3f, 0.5f), 4, 3, 4), MaterialPresets.Jelly, new Vector3(0, 0.151f, 0));
+                    def.Solver = solver;
+                    world.CreateSoftBody(def);
+                }
+                return world;
+            }
+            World alone = With(false, out BodyHandle a), pressing = With(true, out BodyHandle b);
+            for (int n = 0; n < 90; n++)
+            {
+                alone.Step(SoftBodyScenes.Dt);
+                pressing.Step(SoftBodyScenes.Dt);
+                Assert.That(pressing.GetBody(b).Position, Is.EqualTo(alone.GetBody(a).Position), $"position at step {n}");
+                Assert.That(pressing.GetBody(b).Rotation, Is.EqualTo(alone.GetBody(a).Rotation), $"rotation at step {n}");
+            }
+            SoftBody soft = SoftBodySystem.Of(pressing)![0];
+            TestContext.Out.WriteLine($"{solver}: paddle at {pressing.GetBody(b).Position}, jelly strain energy {soft.ComputeStats().StrainEnergy:G3} J (pressed)");
+            Assert.That(soft.ComputeStats().StrainEnergy, Is.GreaterThan(1e-3f), "the paddle does press the jelly");
+        }
     }
 }

@@ -21,6 +21,42 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(body.ComputeStats().KineticEnergy, Is.LessThan(1e-9f));
         }
 
+        // Free fall against its closed form, near the origin and far from it. Each substep adds
+        // g h to the velocity and moves by the new velocity (symplectic Euler; the Newton
+        // solver's implicit Euler is the same in free flight), so after N substeps of h a body
+        // has fallen g h^2 N (N + 1) / 2 and moves at g N h. XPBD velocities were the change in
+        // position over h, and a float far from the origin cannot take a small move: dropped at
+        // 50 m a jelly fell 2 % slow, at 200 m 12 % fast, and at 600 m (floats 6e-5 m apart, a
+        // first substep's fall 2.7e-5 m) not at all: it hung in the air. Measured since, 0.5 m to
+        // 5 km: the fall within 0.03 % of the closed form, the speed within 0.06 % (what is left:
+        // the elastic pass answers the strain the rounding of positions shows, most where
+        // vertices cross a power of two, as a body falling from 0.5 m does). The Newton solver
+        // still takes its velocities from the positions (CHANGELOG, Known limits): checked here
+        // near the origin only.
+        [TestCase(SoftSolver.Xpbd, 0.5f)]
+        [TestCase(SoftSolver.Xpbd, 50f)]
+        [TestCase(SoftSolver.Xpbd, 200f)]
+        [TestCase(SoftSolver.Xpbd, 600f)]
+        [TestCase(SoftSolver.Xpbd, 5000f)]
+        [TestCase(SoftSolver.Newton, 0.5f)]
+        [TestCase(SoftSolver.Newton, 50f)]
+        public void A_soft_body_falls_as_the_closed_form_says_near_the_origin_and_far_from_it(SoftSolver solver, float height)
+        {
+            var world = new World();
+            var def = SoftBodyDef.Of(SoftMesh.Box(new Vector3(1, 1, 1), 4, 4, 4), MaterialPresets.Jelly, new Vector3(height > 100f ? 3000f : 0f, height, 0));
+            def.Solver = solver;
+            SoftBody body = world.GetSoftBody(world.CreateSoftBody(def));
+            float y0 = body.ComputeStats().Centroid.Y;
+            const int steps = 60;
+            int substeps = steps * body.SubstepsFor(SoftBodyScenes.Dt);
+            SoftBodyScenes.Run(world, steps);
+            SoftBodyStats s = body.ComputeStats();
+            double h = 1.0 / 60 * steps / substeps, fall = 9.81 * h * h * substeps * (substeps + 1) / 2, speed = 9.81 * h * substeps;
+            TestContext.Out.WriteLine($"{solver} at {height} m: fell {y0 - s.Centroid.Y:F5} m (closed form {fall:F5}), {-s.Momentum.Y / body.TotalMass:F5} m/s (closed form {speed:F5})");
+            Assert.That(y0 - s.Centroid.Y, Is.EqualTo(fall).Within(0.001 * fall), "fall");
+            Assert.That(-s.Momentum.Y / body.TotalMass, Is.EqualTo(speed).Within(1e-3 * speed), "speed");
+        }
+
         [Test]
         public void Resting_on_the_ground_a_stiff_cube_settles_still([Values] MaterialModel model)
         {

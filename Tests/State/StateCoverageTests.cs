@@ -55,6 +55,9 @@ namespace Fulcrum.Tests.State
             // The step-start velocities and what the blow-up check measured at the end of the
             // substeps (for a step taken again): copied and measured anew in every step before use.
             "SoftBody.VStart", "SoftBody._endLargestJ", "SoftBody._endInverted", "SoftBody._endBlown", "SoftBody._endMeasured",
+            // An XPBD substep's predicted positions and the rounding its prediction carries to the
+            // next substep: set in every substep, the carry cleared at the start of every step.
+            "SoftBody.XPredicted", "SoftBody.XResidual",
             // Timing of past passes (pool or calling thread); the choice never changes results.
             "SoftBody._threadChoice",
         };

@@ -40,6 +40,8 @@ namespace Fulcrum.SoftBodies
         Quaternion[] _startRotation = Array.Empty<Quaternion>();
         Vector3[] _endCenter = Array.Empty<Vector3>();
         Quaternion[] _endRotation = Array.Empty<Quaternion>();
+        // The body origin the rigid solve left (restored exactly, not recomputed from the centre).
+        Vector3[] _endOrigin = Array.Empty<Vector3>();
         // Dynamic bodies: the rigid solve's acceleration over the step, and its position
         // correction per substep (linear, and as a rotation vector).
         Vector3[] _acceleration = Array.Empty<Vector3>();
@@ -94,6 +96,7 @@ namespace Fulcrum.SoftBodies
             _startCenter[e] = b.PreviousPosition[slot] + Vector3.Transform(b.LocalCenter[slot], b.PreviousRotation[slot]);
             _endCenter[e] = b.Center[slot];
             _endRotation[e] = b.Rotation[slot];
+            _endOrigin[e] = b.Position[slot];
             if (b.Type[slot] != BodyType.Dynamic) return;
 
             // Back to the start of the step; BeginSubstep integrates it again.
@@ -162,7 +165,8 @@ namespace Fulcrum.SoftBodies
         /// what the soft bodies did to it in this step is undone. For a step in which a soft body
         /// diverged (it is put back at its start, at rest): a 12 kg plate pinned to a soft sphere
         /// that blew up was left with the 154 m/s the failing step had pushed onto it, went
-        /// through the ground and fell on (soft fuzz seed 42).
+        /// through the ground and fell on (soft fuzz seed 42). A kinematic body goes back to the
+        /// end of its path (the substeps had moved it along it).
         /// </summary>
         public void Restore()
         {
@@ -170,13 +174,14 @@ namespace Fulcrum.SoftBodies
             for (int e = 0; e < _count; e++)
             {
                 int slot = _slot[e];
-                if (b.Type[slot] != BodyType.Dynamic) continue;
+                if (b.Type[slot] == BodyType.Static) continue;
                 b.Center[slot] = _endCenter[e];
                 b.Rotation[slot] = _endRotation[e];
+                b.Position[slot] = _endOrigin[e];
+                b.UpdateWorldInertia(slot);
+                if (b.Type[slot] != BodyType.Dynamic) continue;
                 b.LinearVelocity[slot] = _endLinear[e];
                 b.AngularVelocity[slot] = _endAngular[e];
-                b.SyncOriginFromCenter(slot);
-                b.UpdateWorldInertia(slot);
             }
         }
 
@@ -213,6 +218,16 @@ namespace Fulcrum.SoftBodies
                     b.Center[slot] += b.LinearVelocity[slot] * h + _correction[e];
                     b.Rotation[slot] = Quaternion.Normalize(Rotation.FromRotationVector(_angularCorrection[e])
                         * Rotation.Integrate(b.Rotation[slot], b.AngularVelocity[slot], h));
+                }
+                else if (t >= 1f)
+                {
+                    // The last substep ends exactly where the rigid solve put the body (the
+                    // interpolation at t = 1 is a rounding away from it).
+                    b.Center[slot] = _endCenter[e];
+                    b.Rotation[slot] = _endRotation[e];
+                    b.Position[slot] = _endOrigin[e];
+                    b.UpdateWorldInertia(slot);
+                    continue;
                 }
                 else
                 {
@@ -421,6 +436,7 @@ namespace Fulcrum.SoftBodies
             Array.Resize(ref _startRotation, capacity);
             Array.Resize(ref _endCenter, capacity);
             Array.Resize(ref _endRotation, capacity);
+            Array.Resize(ref _endOrigin, capacity);
             Array.Resize(ref _acceleration, capacity);
             Array.Resize(ref _angularAcceleration, capacity);
             Array.Resize(ref _correction, capacity);

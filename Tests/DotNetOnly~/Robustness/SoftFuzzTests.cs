@@ -17,12 +17,13 @@ namespace Fulcrum.Tests.Robustness
     /// go down; each failing world is listed one per line so it can be replayed
     /// (<c>fulcrum fuzz --soft --count 1 --seed N</c>).
     /// <para>
-    /// Known and not yet fixed (seeds 0-199): 1 world diverges (reported), none gains energy or
-    /// ends with an inverted element; seeds 200-399: 1, 1 and 0; seeds 400-599: 1, 1 and 0;
-    /// seeds 600-799: 1, 1 and 1; seeds 800-999: 0, 1 and 1 (10 worlds; 11 before two Newton
-    /// bodies on one rigid body saw each other's response, 14 before a step that blows a body
-    /// apart was taken again with finer substeps; Documentation~/SoftSolvers.md keeps the
-    /// history). Before the Newton solver took
+    /// Known and not yet fixed (seeds 0-199): 1 world diverges (reported), none gains energy, 2
+    /// end with an inverted element (53 and 73, since XPBD vertices keep their predicted
+    /// velocity; 0 before); seeds 200-399: 1, 1 and 0 (measured again then); seeds 400-599: 1,
+    /// 1 and 0; seeds 600-799: 1, 1 and 1; seeds 800-999: 0, 1 and 1 (400-999 as last measured
+    /// before that change; 12 worlds; 10 before it, 11 before two Newton bodies on one rigid body
+    /// saw each other's response, 14 before a step that blows a body apart was taken again with
+    /// finer substeps; Documentation~/SoftSolvers.md keeps the history). Before the Newton solver took
     /// attached rigid bodies into its step, its energy guard counted the rigid bodies it moves
     /// and a pinned body's step started from the substep's start, 19, 3 and 4, and 21, 2 and 1
     /// (before the guard, 29 diverged of 0-199).
@@ -108,8 +109,15 @@ namespace Fulcrum.Tests.Robustness
         // ImplicitNewtonSolver.SharedBodies, AttachmentSolver.SharedVertices): 82 passes:
         // 1/0/0 -> 0/0/0. Only worlds with two soft bodies on one rigid body are touched (of the
         // 44 in seeds 0-29999, 15 failed and 6 fail now).
+        // Then XPBD vertices no constraint moves kept their predicted velocity (free fall far from
+        // the origin, SoftBody.EndPositions): every trajectory moves at rounding level, and two
+        // worlds that ended whole by chance now end with an inverted element: 73 (a 0.16 kg box
+        // pinned to a body: its tets at the pins reach J -11 at step 40 and -0.35 at step 160
+        // with the build before too, which ended at +0.27 at step 179) and 53 (a 1.4 t Newton
+        // box at E 2.8e4 Pa pinned to the world, its tets at the pins crushed by the bodies
+        // around it); 959 no longer needs its step taken again: 0/0/0 -> 0/0/2 here.
         [TestCase(0, 50, 0, 0, 0)]
-        [TestCase(50, 50, 0, 0, 0)]
+        [TestCase(50, 50, 0, 0, 2)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
             var failures = new List<string>();
@@ -170,10 +178,13 @@ namespace Fulcrum.Tests.Robustness
         // Worlds in which a soft body blew apart at the default substeps, and that finer substeps
         // carry through: the step is taken again (SoftBodySystem.RetriedSteps) and the world runs
         // clean; with no step taken again (RetrySubstepFactor 1) the same world diverges. 681: a
-        // 3 kg nu 0.4999 Newton box pinned to a body that strikes the ground; 959: a nu 0.4999
-        // sphere landing on a very soft beam pinned to the world.
+        // 3 kg nu 0.4999 Newton box pinned to a body that strikes the ground; 42: a 0.7 kg
+        // nu 0.4999 Newton sphere pinned 3 m from a 12.5 kg body that strikes the ground and
+        // spins up. (959, a nu 0.4999 sphere landing on a very soft beam pinned to the world, was
+        // the second case until free vertices kept their predicted velocity exactly: it runs
+        // clean at the default substeps since, and is replayed below.)
+        [TestCase(42)]
         [TestCase(681)]
-        [TestCase(959)]
         public void A_soft_world_that_blows_apart_at_the_default_substeps_is_taken_again_and_runs_clean(int seed)
         {
             SoftFuzz.Outcome o = SoftFuzz.Run(seed, 180);
@@ -222,6 +233,7 @@ namespace Fulcrum.Tests.Robustness
         [TestCase(14)]
         [TestCase(229)]
         [TestCase(358)]
+        [TestCase(959)]
         public void A_soft_world_that_once_blew_up_runs_clean(int seed)
         {
             SoftFuzz.Outcome o = SoftFuzz.Run(seed, 180);
