@@ -19,11 +19,12 @@ namespace Fulcrum.Tests.Robustness
     /// <para>
     /// Known and not yet fixed (seeds 0-199): 1 world diverges (reported), none gains energy, 2
     /// end with an inverted element (53 and 73, since XPBD vertices keep their predicted
-    /// velocity; 0 before); seeds 200-399: 1, 1 and 0 (measured again then); seeds 400-599: 1,
-    /// 1 and 0; seeds 600-799: 1, 1 and 1; seeds 800-999: 0, 1 and 1 (400-999 as last measured
-    /// before that change; 12 worlds; 10 before it, 11 before two Newton bodies on one rigid body
-    /// saw each other's response, 14 before a step that blows a body apart was taken again with
-    /// finer substeps; Documentation~/SoftSolvers.md keeps the history). Before the Newton solver took
+    /// velocity; 0 before); seeds 200-399: 1, 1 and 0; seeds 400-599: 0, 1 and 2 (482 newly, 560
+    /// where it diverged; 0-599 measured again then); seeds 600-799: 1, 1 and 1; seeds 800-999:
+    /// 0, 1 and 1 (600-999 as last measured before that change; 13 worlds; 10 before it, 11
+    /// before two Newton bodies on one rigid body saw each other's response, 14 before a step
+    /// that blows a body apart was taken again with finer substeps; Documentation~/SoftSolvers.md
+    /// keeps the history). Before the Newton solver took
     /// attached rigid bodies into its step, its energy guard counted the rigid bodies it moves
     /// and a pinned body's step started from the substep's start, 19, 3 and 4, and 21, 2 and 1
     /// (before the guard, 29 diverged of 0-199).
