@@ -112,11 +112,12 @@ namespace Fulcrum.Tests.Robustness
         // 44 in seeds 0-29999, 15 failed and 6 fail now).
         // Then XPBD vertices no constraint moves kept their predicted velocity (free fall far from
         // the origin, SoftBody.EndPositions): every trajectory moves at rounding level, and two
-        // worlds that ended whole by chance now end with an inverted element: 73 (a 0.16 kg box
-        // pinned to a body: its tets at the pins reach J -11 at step 40 and -0.35 at step 160
-        // with the build before too, which ended at +0.27 at step 179) and 53 (a 1.4 t Newton
-        // box at E 2.8e4 Pa pinned to the world, its tets at the pins crushed by the bodies
-        // around it); 959 no longer needs its step taken again: 0/0/0 -> 0/0/2 here.
+        // worlds now end with an inverted element: 73 (a 0.16 kg box pinned to a body: its tets
+        // at the pins reach J -11 at step 40 and -0.35 at step 160 with the build before too,
+        // which happened to end at +0.27 at step 179) and 53 (a 1.4 t Newton box at E 2.8e4 Pa
+        // pinned to the world among heavy bodies: least J 0.19 with the build before; the runs
+        // part ways and a later crush inverts it, -0.40 at step 155); 959 no longer needs its
+        // step taken again: 0/0/0 -> 0/0/2 here.
         [TestCase(0, 50, 0, 0, 0)]
         [TestCase(50, 50, 0, 0, 2)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
