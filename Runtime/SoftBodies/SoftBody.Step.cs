@@ -66,8 +66,9 @@ namespace Fulcrum.SoftBodies
                 // there is nothing to mark (the common case: one J pass per step, not two).
                 if (!_cleanEnd) _startLargestJ = VolumeFloor.Measure(TetData, X, mark: true, out _);
                 _cleanEnd = false;
-                // Pressed from outside: it may touch a rigid shape, or is attached to a body.
-                TetData.Loaded = Touching;
+                // Loaded from outside: it may touch a rigid shape, is attached to a body, or hangs
+                // from a pin (the pin carries its weight: see VolumeFloor).
+                TetData.Loaded = Touching || HasPinnedVertex();
             }
         }
 

@@ -226,6 +226,50 @@ namespace Fulcrum.Tests.SoftBodies
             Assert.That(speed, Is.LessThan(0.3f), "the pair comes to rest");
         }
 
+        // A bar lying on the ground with its near end attached to a ball 1.1 m above it, thrown
+        // down: the attachment meets the ground a metre before the ball would. An attached vertex
+        // takes no contact (it moves with its body), and the anchor, off the ball's shape, met
+        // nothing: the ball's fall drove the bar's end into the ground, 104 mm under a 2 kg ball,
+        // 328 mm under 20 kg and 571 mm under 200 kg, and the contacts pushing its free vertices
+        // out crushed the tets between through J = 0 under 20 and 200 kg (least J -0.32 and
+        // -0.80; soft fuzz seed 73: a 124 kg body swinging a 0.16 kg box on a 3.5 m lever, its
+        // attached end 0.33 m underground). Now an anchor inside an immovable shape pushes its
+        // body and the vertices attached to it out, as a rigid contact there would
+        // (ShapeContactSolver.AnchorsOut, AttachmentSolver.MoveWhole): at most 11 mm deep (it
+        // acts beyond twice the rigid contacts' 5 mm slop). XPBD bodies only: a Newton bar's end
+        // still goes 74-288 mm in (its tets hold, J >= 0.2).
+        [Test]
+        public void An_attached_end_driven_at_the_ground_by_its_body_stays_out_of_it([Values(2f, 20f, 200f)] float bodyMass)
+        {
+            World world = SoftBodyScenes.WorldWithGround();
+            BodyDef bodyDef = BodyDef.Dynamic(new Vector3(-0.5f, 1.2f, 0f));
+            bodyDef.Mass = bodyMass;
+            bodyDef.LinearVelocity = new Vector3(0f, -4f, 0f);
+            BodyHandle body = world.CreateBody(bodyDef);
+            world.AddShape(body, ShapeDef.Of(ShapeGeometry.Sphere(0.1f)));
+            SoftMesh mesh = SoftMesh.Box(new Vector3(0.6f, 0.1f, 0.1f), 6, 1, 1);
+            var material = new NeoHookeanMaterial(MaterialModel.StableNeoHookean, 1e5f, 0.3f, 500f);
+            SoftBodyDef def = SoftBodyDef.Of(mesh, material, new Vector3(0f, 0.06f, 0f));
+            Aabb bounds = mesh.Bounds;
+            def.Pins = new[] { SoftPin.ToBody(bounds.Min, new Vector3(bounds.Min.X + 0.05f, bounds.Max.Y, bounds.Max.Z), body) };
+            SoftBody bar = world.GetSoftBody(world.CreateSoftBody(def));
+            Assert.That(bar.Attachments.Length, Is.EqualTo(4));
+            double start = Mechanical(world, body, bar), most = start;
+            float lowestJ = 1f, lowestAnchor = float.MaxValue;
+            for (int i = 0; i < 120; i++)
+            {
+                world.Step(SoftBodyScenes.Dt);
+                most = Math.Max(most, Mechanical(world, body, bar));
+                lowestJ = MathF.Min(lowestJ, bar.ComputeStats().MinJ);
+                foreach (var a in bar.Attachments) lowestAnchor = MathF.Min(lowestAnchor, bar.Positions[a.Vertex].Y);
+            }
+            TestContext.Out.WriteLine($"{bodyMass} kg ball: lowest attached vertex {lowestAnchor * 1000:F1} mm, lowest J {lowestJ:F3}, mechanical energy rose at most {most - start:G3} J, ball at {world.GetBody(body).Position}");
+            Assert.That(SoftBodySystem.Of(world)!.DivergenceCount, Is.EqualTo(0));
+            Assert.That(lowestAnchor, Is.GreaterThan(-0.02f), "the attached end stays out of the ground (m)");
+            Assert.That(lowestJ, Is.GreaterThan(0f), "no tet crushed through");
+            Assert.That(most - start, Is.LessThan(0.5), "no energy gained (J)");
+        }
+
         // Two Newton bodies pinned to one light body (a 20 g or 2 kg hub): a sphere below, a box
         // beside and above it, dropped together (soft fuzz seed 82 in a scene of its own). Each
         // body's Newton step moves the hub as part of its own system, one body after the other;

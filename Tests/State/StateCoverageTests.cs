@@ -49,7 +49,7 @@ namespace Fulcrum.Tests.State
             // The step's soft-soft pairs and the count of substeps begun: set at the start of every step.
             "SoftBody.SoftPairs", "SoftBody.SubstepsBegun",
             // The tet kernels' (W, FreeW, M, inverted mark) per vertex, the same masses per element, and
-            // whether the body is pressed from outside (the volume floor): set from the saved arrays at
+            // whether the body is loaded from outside (the volume floor): set from the saved arrays at
             // the start of every step.
             "TetStream.Masses", "TetStream.ElementMasses", "TetStream.Loaded", "SoftBody._startLargestJ", "SoftBody._cleanEnd",
             // The step-start velocities and what the blow-up check measured at the end of the

@@ -428,6 +428,7 @@ namespace Fulcrum.SoftBodies
                     Slide(body, i, owner, contact, t, dlt, coupling, h, gravityStep);
                 }
                 if (patch > 0) HoldPatch(body, patch, mu, owner, coupling, h, gravityStep, still);
+                if (normal && body.Attachments.Length > 0 && !byVelocity && !RigidCoupling.Movable(world.Bodies, owner)) AnchorsOut(world, body, geometry, pose, owner, coupling, h);
                 // The shape's corners and edges against the surface triangles (a tet body's).
                 if (normal && body.Tets.Length > 0 && geometry.Type != ShapeType.Plane
                     && !(RigidCoupling.Movable(world.Bodies, owner) && world.Bodies.Mass[owner] > ShapeFeatureContacts.MaxLoadRatio * body.TotalMass))
@@ -436,6 +437,48 @@ namespace Fulcrum.SoftBodies
             // Meshes only before the elastic pass: a second friction pass there let a jelly falling
             // at 4 m/s onto a mesh floor end 2.5 mm deep (the bound is 2 mm).
             if (normal && _meshes.Count > 0) _meshes.Solve(body, _pushed, _held);
+        }
+
+        /// <summary>
+        /// The anchors of the body's attachments to dynamic bodies that lie inside the immovable
+        /// shape of <paramref name="owner"/> push their body out to its surface, with the vertices
+        /// attached to it (<see cref="AttachmentSolver.MoveWhole"/>), as a rigid contact at the
+        /// anchor would. An attached vertex takes no contact of its own (it moves with its
+        /// body: see Solve), and an anchor off the body's shapes meets nothing else: a 124 kg body
+        /// swinging a 0.16 kg box on a 3.5 m lever drove the box's attached end 0.33 m into the
+        /// ground, and the contacts pushing its free vertices out crushed the tets between
+        /// through J = 0 (soft fuzz seed 73). Only anchors deeper inside the shape than twice the
+        /// rigid contacts' <see cref="WorldSettings.LinearSlop"/>, and out to that depth: a body
+        /// resting on the ground with a cloth attached under it has its anchors on the ground, as
+        /// deep as the body's own contacts leave it, and pushing those out fights them (at the
+        /// slop itself, a 10 g body resting on a slope with a 6 kg sphere hanging from it was
+        /// nudged every substep, and the run took another course: soft fuzz seed 21).
+        /// The push is bounded like a rigid contact's (the anchor's speed into the shape plus
+        /// <see cref="WorldSettings.MaxContactPushSpeed"/>, over the substep). XPBD bodies only:
+        /// a Newton body's step moves the bodies it is attached to as part of its own solve, and
+        /// pushed here as well, a 20 g body holding two Newton bodies by pins gained 31 J on
+        /// landing (492 J for a 2 kg one with the push bounded by the inward motion alone;
+        /// CouplingTests). A Newton body's anchors still meet nothing.
+        /// </summary>
+        void AnchorsOut(World world, SoftBody body, in ShapeGeometry geometry, in Pose pose, int owner, RigidCoupling coupling, float h)
+        {
+            BodyStorage b = world.Bodies;
+            Attachment[] attachments = body.Attachments;
+            float[] w = body.W;
+            for (int k = 0; k < attachments.Length; k++)
+            {
+                ref Attachment a = ref attachments[k];
+                int slot = a.BodySlot;
+                if (slot == owner || w[a.Vertex] == 0f || !AttachmentSolver.Anchor(b, a, out Vector3 anchor) || !RigidCoupling.Movable(b, slot)) continue;
+                float slop = 2f * world.Settings.LinearSlop; // see above
+                if (!ShapeDistance.Query(geometry, pose, anchor, 0f, out float distance, out Vector3 n) || !(distance < -slop)) continue;
+                // Out by what the anchor moved in within this substep, and by the world's
+                // contact push speed beyond that: a push changes the body's velocity by the move
+                // over h, so one deep anchor pushed out at once would throw its body off.
+                float inward = MathF.Max(0f, -Vector3.Dot(coupling.PointVelocity(slot, anchor), n));
+                float move = MathF.Min(-distance - slop, (inward + world.Settings.MaxContactPushSpeed) * h);
+                if (move > 0f) AttachmentSolver.MoveWhole(world, body, slot, anchor, n, move, h, coupling);
+            }
         }
     }
 }

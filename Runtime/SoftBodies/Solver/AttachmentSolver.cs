@@ -104,22 +104,9 @@ namespace Fulcrum.SoftBodies
             if (!any) return;
             bool shared = coupling.Shared(slot);
             if (shared) SharedVertices(b, body, slot, center, coupling, a, q, h, move: false);
-            // The body's own inertia: its mass on the translation, I (world) on the rotation;
-            // locked axes are held (their rows the identity, no move).
-            float mass = 1f / b.InverseMass[slot];
-            Vector3 locked = Vector3.One - AxisLockMath.AngularMask(b.Locks[slot]);
-            if (!(b.InverseInertiaWorld[slot] + Mat3.Diagonal(locked)).TryInvert(out Mat3 inertia)) return;
-            for (int c = 0; c < 3; c++) a[7 * c] += mass;
-            for (int row = 0; row < 3; row++)
-                for (int col = 0; col < 3; col++) a[6 * (3 + row) + 3 + col] += inertia[row, col];
+            if (!AddBody(b, slot, a, out _, out _)) return;
             AxisLocks locks = b.Locks[slot];
-            for (int dof = 0; dof < 6; dof++)
-            {
-                if (((int)locks & (1 << dof)) == 0) continue;
-                for (int j = 0; j < 6; j++) a[6 * dof + j] = a[6 * j + dof] = 0;
-                a[7 * dof] = 1;
-                q[dof] = 0;
-            }
+            for (int dof = 0; dof < 6; dof++) if (((int)locks & (1 << dof)) != 0) q[dof] = 0;
             if (!DenseCholesky.Factor(a, 6)) return;
             DenseCholesky.Solve(a, 6, q);
             Vector3 move = new Vector3((float)q[0], (float)q[1], (float)q[2]), turn = new Vector3((float)q[3], (float)q[4], (float)q[5]);
@@ -146,6 +133,91 @@ namespace Fulcrum.SoftBodies
                 angular += new Vector3((float)sums[3], (float)sums[4], (float)sums[5]);
             }
             coupling.PushSum(slot, linear, angular, h);
+        }
+
+        /// <summary>
+        /// Moves the dynamic body in <paramref name="slot"/> and every vertex attached to it (this
+        /// soft body's, and other soft bodies' when they share it) as one rigid whole, so that the
+        /// whole's point at <paramref name="point"/> moves <paramref name="move"/> along
+        /// <paramref name="n"/> (unit): the least-inertia move q = A^-1 J^T n P, with A the
+        /// whole's mass matrix (as <see cref="Solve"/>'s block: the body's mass and inertia plus
+        /// m_k J_k^T J_k of each attached vertex) and P = move / (n . J A^-1 J^T n), the impulse
+        /// along n that the point takes. The body takes its share (M dc, I dtheta) as a position
+        /// impulse, so its velocity changes by its move over h; the attached vertices move with
+        /// their anchors (a body that has not begun the substep takes it as velocity, as in
+        /// <see cref="SharedVertices"/>). Pushing the body alone, a 20 g body holding two heavy
+        /// Newton bodies was pushed far, pulled back by them in their attachment passes, and the
+        /// three gained 1.4e4 J (soft fuzz seed 82).
+        /// </summary>
+        public static void MoveWhole(World world, SoftBody body, int slot, Vector3 point, Vector3 n, float move, float h, RigidCoupling coupling)
+        {
+            BodyStorage b = world.Bodies;
+            Span<double> a = stackalloc double[36];
+            Span<double> q = stackalloc double[6];
+            Span<double> unused = stackalloc double[6];
+            a.Clear();
+            unused.Clear();
+            Vector3 center = b.Center[slot];
+            Attachment[] attachments = body.Attachments;
+            Vector3[] x = body.X;
+            float[] w = body.W;
+            int generation = b.Generation[slot];
+            for (int k = 0; k < attachments.Length; k++)
+            {
+                int i = attachments[k].Vertex;
+                if (attachments[k].BodySlot != slot || attachments[k].BodyGeneration != generation || w[i] == 0f) continue;
+                Anchor(b, attachments[k], out Vector3 anchor);
+                AddBlock(a, 1.0 / w[i], anchor - center);
+            }
+            bool shared = coupling.Shared(slot);
+            if (shared) SharedVertices(b, body, slot, center, coupling, a, unused, h, move: false);
+            if (!AddBody(b, slot, a, out float mass, out Mat3 inertia) || !DenseCholesky.Factor(a, 6)) return;
+            Vector3 r = point - center, rn = Vector3.Cross(r, n);
+            q[0] = n.X; q[1] = n.Y; q[2] = n.Z; q[3] = rn.X; q[4] = rn.Y; q[5] = rn.Z;
+            AxisLocks locks = b.Locks[slot];
+            for (int dof = 0; dof < 6; dof++) if (((int)locks & (1 << dof)) != 0) q[dof] = 0;
+            DenseCholesky.Solve(a, 6, q);
+            Vector3 dc = new Vector3((float)q[0], (float)q[1], (float)q[2]), turn = new Vector3((float)q[3], (float)q[4], (float)q[5]);
+            float along = Vector3.Dot(dc + Vector3.Cross(turn, r), n);
+            if (!(along > 0f)) return;
+            float scale = move / along;
+            dc *= scale;
+            turn *= scale;
+            for (int k = 0; k < attachments.Length; k++)
+            {
+                int i = attachments[k].Vertex;
+                if (attachments[k].BodySlot != slot || attachments[k].BodyGeneration != generation || w[i] == 0f) continue;
+                Anchor(b, attachments[k], out Vector3 anchor);
+                x[i] += dc + Vector3.Cross(turn, anchor - center);
+            }
+            if (shared)
+            {
+                q[0] = dc.X; q[1] = dc.Y; q[2] = dc.Z; q[3] = turn.X; q[4] = turn.Y; q[5] = turn.Z;
+                unused.Clear();
+                SharedVertices(b, body, slot, center, coupling, unused, q, h, move: true);
+            }
+            coupling.PushSum(slot, mass * dc, inertia * turn, h);
+        }
+
+        // The body's own inertia into a block: its mass on the translation, I (world) on the
+        // rotation; locked axes are held (their rows the identity, no move). False when the
+        // inertia cannot be inverted.
+        static bool AddBody(BodyStorage b, int slot, Span<double> a, out float mass, out Mat3 inertia)
+        {
+            mass = 1f / b.InverseMass[slot];
+            Vector3 locked = Vector3.One - AxisLockMath.AngularMask(b.Locks[slot]);
+            if (!(b.InverseInertiaWorld[slot] + Mat3.Diagonal(locked)).TryInvert(out inertia)) return false;
+            for (int c = 0; c < 3; c++) a[7 * c] += mass;
+            for (int row = 0; row < 3; row++)
+                for (int col = 0; col < 3; col++) a[6 * (3 + row) + 3 + col] += inertia[row, col];
+            AxisLocks locks = b.Locks[slot];
+            for (int dof = 0; dof < 6; dof++)
+            {
+                if (((int)locks & (1 << dof)) == 0) continue;
+                for (int j = 0; j < 6; j++) a[6 * dof + j] = a[6 * j + dof] = 0;
+                a[7 * dof] = 1;
+            }
+            return true;
         }
 
         /// <summary>

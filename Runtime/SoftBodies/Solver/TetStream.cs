@@ -64,8 +64,8 @@ namespace Fulcrum.SoftBodies
         public const int ElementMassFields = 9;
 
         /// <summary>
-        /// Whether the body may be pressed from outside in this step (a rigid shape it may
-        /// touch, or an attachment): the <see cref="VolumeFloor"/> holds its tets only then.
+        /// Whether the body may be loaded from outside in this step (a rigid shape it may touch,
+        /// an attachment, or a pin): the <see cref="VolumeFloor"/> holds its tets only then.
         /// </summary>
         public bool Loaded;
 

@@ -118,8 +118,12 @@ namespace Fulcrum.Tests.Robustness
         // pinned to the world among heavy bodies: least J 0.19 with the build before; the runs
         // part ways and a later crush inverts it, -0.40 at step 155); 959 no longer needs its
         // step taken again: 0/0/0 -> 0/0/2 here.
+        // Then pinned bodies took the volume floor (53's Newton box hangs from its pin, too soft
+        // for its weight: VolumeFloor) and anchors of XPBD bodies driven into the ground pushed
+        // their bodies out (73's box, dragged 0.33 m into the ground by its pins:
+        // ShapeContactSolver.AnchorsOut): both pass, none fails newly: 0/0/2 -> 0/0/0.
         [TestCase(0, 50, 0, 0, 0)]
-        [TestCase(50, 50, 0, 0, 2)]
+        [TestCase(50, 50, 0, 0, 0)]
         public void Hostile_soft_worlds_are_refused_or_never_escape(int firstSeed, int count, int divergedMeasured, int energyGainsMeasured, int invertedMeasured)
         {
             var failures = new List<string>();
